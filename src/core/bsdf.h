@@ -1,0 +1,110 @@
+#pragma once
+// The scattering models, shared by the reference integrator and the wavefront shade kernel so
+// both estimate exactly the same integral. Directions are unit vectors pointing away from the
+// surface (wo towards the viewer, wi towards the light / next vertex).
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/fresnel.h"
+#include "core/sampling.h"
+#include "core/scene_description.h"
+
+namespace wt {
+
+// Qualitative Oren-Nayar (Oren & Nayar 1994, eq. 30) coefficients: A + B * max(0, cos(phi_i - phi_o))
+// * sin(alpha) * tan(beta). At sigma = 0, A = 1 and B = 0: exactly Lambertian.
+//
+// Energy: the model's directional albedo, rho * (A + B * g(theta_o)), peaks at grazing view,
+// where g = E_cos[max(0, cos dphi) tan(theta_i)] = (1/pi) * (pi/2) = 1/2. For sigma near 0.3,
+// A + B/2 reaches 1.0054: the published model reflects more than rho there. We scale A and B by
+// 1 / max(1, A + B/2), which changes nothing at sigma = 0 or sigma >= 0.33 and otherwise by at
+// most 0.54%, so the albedo never exceeds rho (checked by quadrature in bsdf_test).
+struct OrenNayarTerms {
+    float a, b;
+};
+inline OrenNayarTerms oren_nayar_terms(float sigma) {
+    const float s2 = sigma * sigma;
+    const float a = 1.0f - 0.5f * s2 / (s2 + 0.33f);
+    const float b = 0.45f * s2 / (s2 + 0.09f);
+    const float energy_scale = 1.0f / std::fmax(1.0f, a + 0.5f * b);
+    return {a * energy_scale, b * energy_scale};
+}
+
+// The Oren-Nayar factor (A + B ...) written without angles: cos(phi_i - phi_o) sin(theta_i)
+// sin(theta_o) is the dot product of wi and wo projected onto the tangent plane, and
+// sin(alpha) tan(beta) = sin_i sin_o / max(cos_i, cos_o). This avoids atan/acos and the
+// 0/0 of the azimuth at normal incidence. The floor on the divisor keeps a sample with
+// both directions exactly grazing finite (its cosine factor makes its true weight vanish).
+inline float oren_nayar_factor(const OrenNayarTerms& on, float cos_i, float cos_o, float wi_dot_wo) {
+    const float projected = std::fmax(0.0f, wi_dot_wo - cos_i * cos_o);
+    return on.a + on.b * projected / std::fmax(std::fmax(cos_i, cos_o), 1e-7f);
+}
+
+// BSDF value f(wo, wi) of a diffuse material; n faces wo's side. Zero below the surface.
+inline glm::vec3 eval_diffuse_bsdf(const Material& m, const glm::vec3& n, const glm::vec3& wo, const glm::vec3& wi) {
+    const float cos_i = glm::dot(n, wi);
+    const float cos_o = glm::dot(n, wo);
+    if (cos_i <= 0.0f || cos_o <= 0.0f) return glm::vec3(0.0f);
+    if (m.type == MaterialType::lambertian) return m.albedo * kInvPi;
+    return m.albedo * (kInvPi * oren_nayar_factor(oren_nayar_terms(m.sigma), cos_i, cos_o, glm::dot(wi, wo)));
+}
+
+struct BsdfSample {
+    glm::vec3 direction{0.0f};
+    glm::vec3 weight{0.0f};  // f * |cos| / pdf, or the specular throughput
+    bool specular = false;    // emission seen along it counts (no light sample covered it)
+    bool valid = false;
+};
+
+// Samples the next direction. n_geom is the geometric normal (outward for spheres, winding for
+// triangles); d the incoming ray direction. u_choice only matters for glass.
+inline BsdfSample sample_bsdf(const Material& m, const glm::vec3& n_geom, const glm::vec3& d, float u0, float u1,
+                              float u_choice) {
+    BsdfSample s;
+    const bool front = glm::dot(d, n_geom) < 0.0f;
+    const glm::vec3 n = front ? n_geom : -n_geom;  // facing the incoming ray
+    switch (m.type) {
+        case MaterialType::lambertian:
+        case MaterialType::oren_nayar: {
+            const glm::vec3 local = sample_cosine_hemisphere(u0, u1);
+            s.direction = glm::normalize(Frame(n).to_world(local));
+            const float cos_i = glm::dot(n, s.direction);
+            if (cos_i <= 0.0f) return s;  // lost to rounding at the horizon
+            // f * cos / pdf with pdf = cos / pi: the albedo times the Oren-Nayar factor.
+            s.weight = m.albedo;
+            if (m.type == MaterialType::oren_nayar) {
+                const glm::vec3 wo = -d;
+                s.weight *= oren_nayar_factor(oren_nayar_terms(m.sigma), cos_i, glm::dot(n, wo), glm::dot(s.direction, wo));
+            }
+            s.valid = true;
+            return s;
+        }
+        case MaterialType::mirror:
+            s.direction = glm::normalize(reflect(d, n));
+            s.weight = m.reflectance;
+            s.specular = s.valid = true;
+            return s;
+        case MaterialType::glass: {
+            // Inside/outside is decided by the geometric normal: spheres' normals point outward.
+            const float eta = front ? 1.0f / m.ior : m.ior;
+            const float cos_i = -glm::dot(d, n);
+            const auto refracted = refract(d, n, eta);
+            s.specular = s.valid = true;
+            s.weight = glm::vec3(1.0f);
+            if (refracted) {
+                const float cos_outside = front ? cos_i : refracted->cos_transmitted;
+                // Choosing reflection with probability R makes the weight R / R = 1 either way.
+                if (u_choice >= schlick_reflectance(cos_outside, m.ior)) {
+                    s.direction = refracted->direction;
+                    return s;
+                }
+            }
+            s.direction = glm::normalize(reflect(d, n));  // Fresnel reflection or total internal reflection
+            return s;
+        }
+    }
+    return s;
+}
+
+}  // namespace wt

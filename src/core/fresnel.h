@@ -1,0 +1,39 @@
+#pragma once
+// Smooth-dielectric optics: Snell's law and Schlick's approximation to the Fresnel reflectance.
+
+#include <cmath>
+#include <optional>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+namespace wt {
+
+// Schlick 1994. cos_outside is the cosine of the angle on the optically thinner side: the
+// incident angle when entering the glass, the transmitted angle when leaving it. Using the
+// inside angle on exit would get total internal reflection's onset wrong.
+inline float schlick_reflectance(float cos_outside, float ior) {
+    float r0 = (1.0f - ior) / (1.0f + ior);
+    r0 *= r0;
+    const float m = 1.0f - cos_outside;
+    const float m2 = m * m;
+    return r0 + (1.0f - r0) * (m2 * m2 * m);
+}
+
+// Refracts unit direction d through a surface whose unit normal n faces against d
+// (dot(d, n) < 0). eta = n_incident / n_transmitted. Empty on total internal reflection.
+struct Refraction {
+    glm::vec3 direction;
+    float cos_transmitted;
+};
+inline std::optional<Refraction> refract(const glm::vec3& d, const glm::vec3& n, float eta) {
+    const float cos_i = -glm::dot(d, n);
+    const float sin2_t = eta * eta * std::fmax(0.0f, 1.0f - cos_i * cos_i);
+    if (sin2_t >= 1.0f) return std::nullopt;
+    const float cos_t = std::sqrt(1.0f - sin2_t);
+    return Refraction{glm::normalize(eta * d + (eta * cos_i - cos_t) * n), cos_t};
+}
+
+inline glm::vec3 reflect(const glm::vec3& d, const glm::vec3& n) { return d - 2.0f * glm::dot(d, n) * n; }
+
+}  // namespace wt

@@ -1,0 +1,41 @@
+#pragma once
+// Geometry as structure-of-arrays buffers: one array per component, so the intersect kernels
+// read N primitives (or N rays' worth of one primitive) with contiguous vector loads.
+
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "core/aligned_vector.h"
+
+namespace wt {
+
+// Triangles stored for Moller-Trumbore: a vertex and the two edges leaving it, which is what
+// the test consumes, plus the unit geometric normal cross(e1, e2) for shading.
+struct TriangleSoA {
+    AlignedVector<float> v0x, v0y, v0z;
+    AlignedVector<float> e1x, e1y, e1z;
+    AlignedVector<float> e2x, e2y, e2z;
+    AlignedVector<float> nx, ny, nz;
+    AlignedVector<uint32_t> material;
+
+    std::size_t size() const { return material.size(); }
+    void push_back(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id);
+    glm::vec3 vertex0(std::size_t i) const { return {v0x[i], v0y[i], v0z[i]}; }
+    glm::vec3 edge1(std::size_t i) const { return {e1x[i], e1y[i], e1z[i]}; }
+    glm::vec3 edge2(std::size_t i) const { return {e2x[i], e2y[i], e2z[i]}; }
+    glm::vec3 normal(std::size_t i) const { return {nx[i], ny[i], nz[i]}; }
+};
+
+struct SphereSoA {
+    AlignedVector<float> cx, cy, cz;
+    AlignedVector<float> radius;
+    AlignedVector<uint32_t> material;
+
+    std::size_t size() const { return material.size(); }
+    void push_back(const glm::vec3& center, float r, uint32_t material_id);
+    glm::vec3 center(std::size_t i) const { return {cx[i], cy[i], cz[i]}; }
+};
+
+}  // namespace wt

@@ -1,0 +1,42 @@
+#pragma once
+// The emissive triangles as a sampling table. A light point is chosen with probability
+// proportional to area, so the pdf with respect to area is 1 / total_area everywhere on every
+// light, whatever their emission.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/geometry_soa.h"
+#include "core/scene_description.h"
+
+namespace wt {
+
+struct LightSample {
+    glm::vec3 position;
+    glm::vec3 normal;    // the emitting (front) side
+    glm::vec3 radiance;  // emitted towards the front side
+    float pdf_area;
+};
+
+class LightTable {
+public:
+    LightTable() = default;
+    LightTable(const TriangleSoA& triangles, const std::vector<Material>& materials);
+
+    bool empty() const { return triangle_.empty(); }
+    std::size_t size() const { return triangle_.size(); }
+    float total_area() const { return total_area_; }
+
+    // u_choice picks the triangle, (u0, u1) the point on it.
+    LightSample sample(const TriangleSoA& triangles, float u_choice, float u0, float u1) const;
+
+private:
+    std::vector<uint32_t> triangle_;   // triangle ids of the emitters
+    std::vector<float> cdf_;           // cumulative area, normalised, cdf_.back() == 1
+    std::vector<glm::vec3> radiance_;
+    float total_area_ = 0.0f;
+};
+
+}  // namespace wt

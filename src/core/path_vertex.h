@@ -1,0 +1,108 @@
+#pragma once
+// What happens at one path vertex — emission, light samples, the next direction, Russian
+// roulette — written once and called by both the reference integrator and the wavefront shade
+// kernel. The two integrators differ only in how they schedule this work, never in the
+// estimator, so agreement between them tests the scheduling.
+
+#include <cmath>
+#include <optional>
+
+#include <glm/geometric.hpp>
+
+#include "core/bsdf.h"
+#include "core/ray_offset.h"
+#include "core/rng.h"
+#include "core/scene.h"
+
+namespace wt {
+
+// The camera ray of sample `sample` in pixel `pixel` (row-major index), jittered inside its
+// stratum of the pixel.
+inline Ray camera_ray(const Scene& scene, uint32_t pixel, uint32_t sample, uint64_t key) {
+    const uint32_t width = uint32_t(scene.settings.width);
+    const glm::vec2 offset = stratified_pixel_offset(sample, uint32_t(scene.settings.spp), random_float(key, 0, dim::camera_x),
+                                                     random_float(key, 0, dim::camera_y));
+    return scene.camera.generate_ray(float(pixel % width) + offset.x, float(pixel / width) + offset.y);
+}
+
+// Radiance emitted towards the incoming ray: lights are one-sided, emitting on the side their
+// geometric normal faces.
+inline glm::vec3 emitted_towards(const Material& m, const glm::vec3& n_geom, const glm::vec3& d) {
+    return glm::dot(d, n_geom) < 0.0f ? m.emission : glm::vec3(0.0f);
+}
+
+struct ShadowRay {
+    Ray ray;
+    float tmax;              // distance to (just short of) the light point
+    glm::vec3 contribution;  // added to the path's radiance if nothing blocks the ray
+};
+
+// Light sample `index` of `count` at a diffuse vertex (next-event estimation). The estimate is
+// f * Le * cos_x * cos_y / (dist^2 * pdf_area), averaged over the `count` shadow rays. Empty when
+// the sample cannot contribute (light seen from behind, point below the surface), so no ray is
+// traced for it.
+inline std::optional<ShadowRay> sample_light(const Scene& scene, const Material& m, const SurfacePoint& surface,
+                                             const glm::vec3& d, const glm::vec3& throughput, uint64_t key,
+                                             uint32_t bounce, uint32_t index, uint32_t count) {
+    const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
+    const LightSample light = scene.lights.sample(scene.triangles, random_float(key, bounce, base),
+                                                  random_float(key, bounce, base + 1), random_float(key, bounce, base + 2));
+    const glm::vec3 n = glm::dot(d, surface.normal) < 0.0f ? surface.normal : -surface.normal;
+    const glm::vec3 to_light = light.position - surface.position;
+    const float dist2 = glm::dot(to_light, to_light);
+    if (!(dist2 > 0.0f)) return std::nullopt;
+    const float dist = std::sqrt(dist2);
+    const glm::vec3 wi = to_light / dist;
+    const float cos_x = glm::dot(n, wi);
+    const float cos_y = -glm::dot(light.normal, wi);
+    if (cos_x <= 0.0f || cos_y <= 0.0f) return std::nullopt;
+
+    const glm::vec3 f = eval_diffuse_bsdf(m, n, -d, wi);
+    const float geometry = cos_x * cos_y / (dist2 * light.pdf_area * float(count));
+    ShadowRay s;
+    s.ray.origin = offset_ray_origin(surface.position, n);
+    // Both ends are moved off their surfaces, so neither the shading point's nor the light's
+    // own triangle can block the ray.
+    const glm::vec3 target = offset_ray_origin(light.position, light.normal);
+    const glm::vec3 span = target - s.ray.origin;
+    s.tmax = glm::length(span);
+    s.ray.direction = span / s.tmax;
+    s.contribution = throughput * f * light.radiance * geometry;
+    return s;
+}
+
+struct PathContinuation {
+    Ray ray;
+    glm::vec3 throughput;
+    bool specular;  // the next hit's emission is counted: no light sample covered this direction
+};
+
+// Samples the next direction from the BSDF and applies Russian roulette. Empty when the path
+// ends. `bounce` is the index of the vertex being shaded (0 = first hit).
+inline std::optional<PathContinuation> continue_path(const Scene& scene, const Material& m, const SurfacePoint& surface,
+                                                     const glm::vec3& d, const glm::vec3& throughput, uint64_t key,
+                                                     uint32_t bounce) {
+    if (int(bounce) + 1 >= scene.settings.max_bounces) return std::nullopt;
+    const BsdfSample s = sample_bsdf(m, surface.normal, d, random_float(key, bounce, dim::bsdf_u),
+                                     random_float(key, bounce, dim::bsdf_v), random_float(key, bounce, dim::bsdf_choice));
+    if (!s.valid) return std::nullopt;
+    PathContinuation next;
+    next.throughput = throughput * s.weight;
+    // A black surface (the light's back, an albedo-0 emitter) ends the path: nothing it could
+    // gather would count.
+    if (!(next.throughput.x > 0.0f || next.throughput.y > 0.0f || next.throughput.z > 0.0f)) return std::nullopt;
+    next.specular = s.specular;
+    if (int(bounce) >= scene.settings.rr_start_bounce) {
+        // Survival proportional to throughput keeps the estimator unbiased (weight / q) while
+        // ending dim paths early; the cap keeps even bright paths terminating.
+        const float q = std::fmin(0.95f, std::fmax(next.throughput.x, std::fmax(next.throughput.y, next.throughput.z)));
+        if (!(random_float(key, bounce, dim::roulette) < q)) return std::nullopt;
+        next.throughput /= q;
+    }
+    const glm::vec3 side = glm::dot(s.direction, surface.normal) > 0.0f ? surface.normal : -surface.normal;
+    next.ray.origin = offset_ray_origin(surface.position, side);
+    next.ray.direction = s.direction;
+    return next;
+}
+
+}  // namespace wt

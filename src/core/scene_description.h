@@ -1,0 +1,75 @@
+#pragma once
+// What a scene file says, before it is flattened into the SoA buffers the kernels read
+// (see scene.h). Plain data: the loader fills it, build_scene() consumes it, tests build it in code.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace wt {
+
+enum class MaterialType : uint8_t {
+    lambertian,  // albedo / pi
+    oren_nayar,  // qualitative Oren-Nayar 1994, roughness sigma in radians
+    mirror,      // perfect specular reflection, tinted by reflectance
+    glass,       // smooth dielectric: Snell refraction, Schlick Fresnel, total internal reflection
+};
+
+struct Material {
+    std::string name;
+    MaterialType type = MaterialType::lambertian;
+    glm::vec3 albedo{0.0f};       // lambertian, oren_nayar
+    float sigma = 0.0f;           // oren_nayar roughness (radians)
+    glm::vec3 reflectance{1.0f};  // mirror
+    float ior = 1.5f;             // glass, relative to the surrounding medium (vacuum)
+    glm::vec3 emission{0.0f};     // radiance leaving the front face (diffuse materials only)
+
+    bool is_emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
+    bool is_specular() const { return type == MaterialType::mirror || type == MaterialType::glass; }
+};
+
+// Triangles index into `vertices`. Winding defines the front face: the geometric normal is
+// cross(v1 - v0, v2 - v0), and only the front face of an emissive triangle emits.
+struct TriangleMesh {
+    std::vector<glm::vec3> vertices;
+    std::vector<std::array<uint32_t, 3>> triangles;
+    uint32_t material = 0;  // index into SceneDescription::materials
+};
+
+struct Sphere {
+    glm::vec3 center{0.0f};
+    float radius = 1.0f;
+    uint32_t material = 0;
+};
+
+// Pinhole camera. fov_degrees is the vertical field of view; the horizontal one follows
+// from the image's aspect ratio. Screen right is cross(look direction, up).
+struct CameraDescription {
+    glm::vec3 eye{0.0f};
+    glm::vec3 look_at{1.0f, 0.0f, 0.0f};
+    glm::vec3 up{0.0f, 0.0f, 1.0f};
+    float fov_degrees = 90.0f;
+};
+
+struct RenderSettings {
+    int width = 800;
+    int height = 800;
+    int spp = 64;            // samples per pixel
+    int shadow_rays = 3;     // M: light samples per diffuse hit
+    uint64_t seed = 0;       // every random number is keyed by (seed, pixel, sample, bounce, dim)
+    int max_bounces = 64;    // hard cap; Russian roulette ends almost every path long before
+    int rr_start_bounce = 3; // first bounce at which Russian roulette may end a path
+};
+
+struct SceneDescription {
+    CameraDescription camera;
+    RenderSettings settings;
+    std::vector<Material> materials;
+    std::vector<TriangleMesh> meshes;
+    std::vector<Sphere> spheres;
+};
+
+}  // namespace wt

@@ -1,0 +1,68 @@
+#include "kernels/reference_integrator.h"
+
+#include "core/path_vertex.h"
+#include "kernels/scene_intersect.h"
+
+namespace wt {
+
+glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
+                               std::vector<PathVertexRecord>* record) {
+    const uint64_t key = path_key(scene.settings.seed, pixel, sample);
+    const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
+    Ray ray = camera_ray(scene, pixel, sample, key);
+    ++counts.camera_rays;
+    glm::vec3 radiance(0.0f);
+    glm::vec3 throughput(1.0f);
+    bool count_emission = true;  // camera rays and specular bounces: no light sample covered them
+
+    for (uint32_t bounce = 0;; ++bounce) {
+        const Hit hit = intersect_closest(scene, ray);
+        if (!hit.found()) break;  // no environment light
+        const SurfacePoint surface = surface_at(scene, ray, hit);
+        const Material& m = scene.materials[surface.material];
+        PathVertexRecord vertex{bounce, hit, surface.position, surface.normal, surface.material, throughput,
+                                glm::vec3(0.0f), 0, 0, glm::vec3(0.0f)};
+
+        if (count_emission) {
+            vertex.emission_added = throughput * emitted_towards(m, surface.normal, ray.direction);
+            radiance += vertex.emission_added;
+        }
+        if (!m.is_specular() && !scene.lights.empty()) {
+            for (uint32_t j = 0; j < shadow_ray_count; ++j) {
+                const auto shadow = sample_light(scene, m, surface, ray.direction, throughput, key, bounce, j, shadow_ray_count);
+                if (!shadow) continue;
+                ++counts.shadow_rays;
+                ++vertex.shadow_rays_traced;
+                if (intersect_any(scene, shadow->ray, shadow->tmax)) continue;
+                ++vertex.shadow_rays_unoccluded;
+                vertex.direct_added += shadow->contribution;
+                radiance += shadow->contribution;
+            }
+        }
+        if (record) record->push_back(vertex);
+
+        const auto next = continue_path(scene, m, surface, ray.direction, throughput, key, bounce);
+        if (!next) break;
+        ++counts.bounce_rays;
+        ray = next->ray;
+        throughput = next->throughput;
+        count_emission = next->specular;
+    }
+    return radiance;
+}
+
+void render_reference_tile(const Scene& scene, const Tile& tile, Film& film, RayCounts& counts) {
+    const uint32_t spp = uint32_t(scene.settings.spp);
+    for (int y = tile.y0; y < tile.y1; ++y) {
+        for (int x = tile.x0; x < tile.x1; ++x) {
+            const uint32_t pixel = uint32_t(y) * uint32_t(scene.settings.width) + uint32_t(x);
+            for (uint32_t s = 0; s < spp; ++s) {
+                const glm::vec3 radiance = trace_reference_path(scene, pixel, s, counts);
+                ++counts.samples;
+                if (!film.add_sample(pixel, radiance)) ++counts.nonfinite_samples;
+            }
+        }
+    }
+}
+
+}  // namespace wt

@@ -1,0 +1,36 @@
+#pragma once
+// The scalar reference integrator: one camera path at a time, start to finish, in the plainest
+// form of the estimator. It is the oracle the wavefront renderer is tested against and the
+// baseline its speed is measured against; keep it small and obviously right.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/film.h"
+#include "core/scene.h"
+#include "kernels/render_stats.h"
+#include "kernels/tiles.h"
+
+namespace wt {
+
+// One line per path vertex, for replaying a single sample (wavetrace render --debug-sample).
+struct PathVertexRecord {
+    uint32_t bounce;
+    Hit hit;
+    glm::vec3 position, normal;
+    uint32_t material;
+    glm::vec3 throughput;        // arriving at this vertex
+    glm::vec3 emission_added;
+    uint32_t shadow_rays_traced, shadow_rays_unoccluded;
+    glm::vec3 direct_added;
+};
+
+// Radiance of sample `sample` of pixel `pixel`. If `record` is given, each vertex is appended.
+glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
+                               std::vector<PathVertexRecord>* record = nullptr);
+
+void render_reference_tile(const Scene& scene, const Tile& tile, Film& film, RayCounts& counts);
+
+}  // namespace wt

@@ -1,0 +1,59 @@
+#include "kernels/renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "core/thread_pool.h"
+#include "kernels/reference_integrator.h"
+#include "kernels/tiles.h"
+#include "kernels/wavefront_renderer.h"
+
+namespace wt {
+
+int default_thread_count() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+RenderResult render(const Scene& scene, const RenderOptions& options, Film& film) {
+    if (film.width() != scene.settings.width || film.height() != scene.settings.height)
+        throw std::invalid_argument("render: film resolution does not match the scene's");
+    if (options.tile_size < 1) throw std::invalid_argument("render: tile size must be at least 1");
+    if (options.batch_paths < 1) throw std::invalid_argument("render: batch size must be at least 1");
+
+    const int threads = options.threads > 0 ? options.threads : default_thread_count();
+    const std::vector<Tile> tiles = make_tiles(scene.settings.width, scene.settings.height, options.tile_size);
+    std::vector<RayCounts> counts(static_cast<std::size_t>(threads));
+    // Created by the worker that uses it, on first use, so its pages live near that core.
+    std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces(static_cast<std::size_t>(threads));
+
+    ThreadPool pool(threads);
+    const auto start = std::chrono::steady_clock::now();
+    pool.parallel_for(tiles.size(), [&](std::size_t item, int worker) {
+        const Tile& tile = tiles[item];
+        RayCounts& c = counts[std::size_t(worker)];
+        if (options.integrator == Integrator::reference) {
+            render_reference_tile(scene, tile, film, c);
+            return;
+        }
+        auto& ws = workspaces[std::size_t(worker)];
+        if (!ws) {
+            // A batch holds at most batch_paths paths, or one sample of every pixel of a tile larger than that.
+            const std::size_t image_pixels = std::size_t(scene.settings.width) * std::size_t(scene.settings.height);
+            const std::size_t tile_pixels = std::min(image_pixels, std::size_t(options.tile_size) * std::size_t(options.tile_size));
+            const std::size_t capacity = std::max(options.batch_paths, tile_pixels);
+            ws = std::make_unique<WavefrontWorkspace>(capacity, std::size_t(scene.settings.shadow_rays));
+        }
+        render_wavefront_tile(scene, tile, options.batch_paths, *ws, film, c);
+    });
+    const auto stop = std::chrono::steady_clock::now();
+
+    RenderResult result;
+    for (const RayCounts& c : counts) result.counts += c;
+    result.seconds = std::chrono::duration<double>(stop - start).count();
+    result.threads = threads;
+    return result;
+}
+
+}  // namespace wt

@@ -1,0 +1,33 @@
+#pragma once
+// Entry point: renders a scene into a film with either integrator on a pool of threads.
+
+#include <cstddef>
+
+#include "core/film.h"
+#include "core/scene.h"
+#include "kernels/render_stats.h"
+
+namespace wt {
+
+enum class Integrator { wavefront, reference };
+
+struct RenderOptions {
+    Integrator integrator = Integrator::wavefront;
+    int threads = 0;                 // 0: one per hardware thread
+    int tile_size = 16;              // pixels per tile side
+    std::size_t batch_paths = 2048;  // camera paths per wavefront batch: queues sized to stay in L2
+};
+
+struct RenderResult {
+    RayCounts counts;
+    double seconds = 0.0;  // wall time of the rendering itself (no loading, no writing)
+    int threads = 1;
+};
+
+// The film must match the scene's resolution. Deterministic: the same scene (including seed)
+// gives a bit-identical film for any thread count, tile size and batch size.
+RenderResult render(const Scene& scene, const RenderOptions& options, Film& film);
+
+int default_thread_count();
+
+}  // namespace wt

@@ -1,0 +1,202 @@
+// The scattering models against their definitions: Oren-Nayar's limits and energy bound,
+// consistency of each sampler's weight with f * cos / pdf, Fresnel and Snell at the angles
+// where they are known in closed form.
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "core/bsdf.h"
+#include "core/fresnel.h"
+
+namespace wt {
+namespace {
+
+Material diffuse(MaterialType type, float albedo, float sigma = 0.0f) {
+    Material m;
+    m.type = type;
+    m.albedo = glm::vec3(albedo);
+    m.sigma = sigma;
+    return m;
+}
+
+glm::vec3 direction_at(float theta, float phi) {
+    return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+const glm::vec3 kUp(0, 0, 1);
+
+TEST(OrenNayar, SigmaZeroIsExactlyLambertian) {
+    const Material lambert = diffuse(MaterialType::lambertian, 0.7f);
+    const Material on = diffuse(MaterialType::oren_nayar, 0.7f, 0.0f);
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int i = 0; i < 1000; ++i) {
+        const glm::vec3 wo = direction_at(1.55f * u(rng), 6.28f * u(rng));
+        const glm::vec3 wi = direction_at(1.55f * u(rng), 6.28f * u(rng));
+        EXPECT_EQ(eval_diffuse_bsdf(on, kUp, wo, wi), eval_diffuse_bsdf(lambert, kUp, wo, wi));
+        const float u0 = u(rng), u1 = u(rng);
+        const BsdfSample a = sample_bsdf(on, kUp, -wo, u0, u1, 0.5f);
+        const BsdfSample b = sample_bsdf(lambert, kUp, -wo, u0, u1, 0.5f);
+        EXPECT_EQ(a.direction, b.direction);
+        EXPECT_EQ(a.weight, b.weight);
+    }
+}
+
+TEST(OrenNayar, TermsMatchThePaper) {
+    const OrenNayarTerms t = oren_nayar_terms(0.9f);
+    EXPECT_NEAR(t.a, 1.0 - 0.5 * 0.81 / (0.81 + 0.33), 1e-6);
+    EXPECT_NEAR(t.b, 0.45 * 0.81 / (0.81 + 0.09), 1e-6);
+}
+
+TEST(OrenNayar, BackscattersMoreThanLambertAtGrazingView) {
+    // Rough surfaces look brighter towards the light (the paper's retro-reflection).
+    const Material on = diffuse(MaterialType::oren_nayar, 1.0f, 0.9f);
+    const glm::vec3 wo = direction_at(1.2f, 0.0f);
+    const float retro = eval_diffuse_bsdf(on, kUp, wo, direction_at(1.2f, 0.0f)).x;
+    const float forward = eval_diffuse_bsdf(on, kUp, wo, direction_at(1.2f, kPi)).x;
+    EXPECT_GT(retro, forward);
+}
+
+// Directional albedo, the integral of f * cos over the hemisphere, by midpoint quadrature in
+// (cos^2 theta, phi), where the cosine-weighted measure is uniform.
+double directional_albedo_by_quadrature(const Material& m, const glm::vec3& wo) {
+    const int n = 400;
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            const double cos2 = (i + 0.5) / n;
+            const float theta = float(std::acos(std::sqrt(cos2)));
+            const float phi = float(2.0 * M_PI * (j + 0.5) / n);
+            // f * cos dω = f * pi * d(cos^2 theta) d(phi) / (2 pi)
+            sum += eval_diffuse_bsdf(m, kUp, wo, direction_at(theta, phi)).x * kPi;
+        }
+    }
+    return sum / (double(n) * n);
+}
+
+TEST(OrenNayar, AlbedoNeverAboveRhoAtAnyRoughnessOrAngle) {
+    for (float sigma : {0.0f, 0.3f, 0.9f, 2.0f, 10.0f}) {
+        const Material m = diffuse(MaterialType::oren_nayar, 0.8f, sigma);
+        for (float theta_o : {0.0f, 0.5f, 1.0f, 1.4f, 1.5607963f, 1.5707f}) {
+            const double albedo = directional_albedo_by_quadrature(m, direction_at(theta_o, 0.3f));
+            EXPECT_LE(albedo, 0.8 + 1e-3) << "sigma " << sigma << " theta_o " << theta_o;
+            EXPECT_GT(albedo, 0.4) << "sigma " << sigma << " theta_o " << theta_o;
+            EXPECT_TRUE(std::isfinite(albedo));
+        }
+    }
+}
+
+TEST(DiffuseSampling, WeightEqualsBsdfTimesCosineOverPdf) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (const Material& m : {diffuse(MaterialType::lambertian, 0.6f), diffuse(MaterialType::oren_nayar, 0.6f, 0.9f)}) {
+        for (int i = 0; i < 2000; ++i) {
+            const glm::vec3 wo = direction_at(1.5f * u(rng), 6.28f * u(rng));
+            const BsdfSample s = sample_bsdf(m, kUp, -wo, u(rng), u(rng), u(rng));
+            ASSERT_TRUE(s.valid);
+            EXPECT_FALSE(s.specular);
+            const float cos_i = glm::dot(kUp, s.direction);
+            const glm::vec3 expected = eval_diffuse_bsdf(m, kUp, wo, s.direction) * cos_i / cosine_hemisphere_pdf(cos_i);
+            EXPECT_NEAR(s.weight.x, expected.x, 1e-4f * expected.x + 1e-6f);
+        }
+    }
+}
+
+TEST(DiffuseSampling, SamplesTheSideTheRayCameFrom) {
+    const Material m = diffuse(MaterialType::lambertian, 0.5f);
+    const BsdfSample s = sample_bsdf(m, kUp, glm::normalize(glm::vec3(0.3f, 0, 1)), 0.3f, 0.7f, 0.5f);  // hits the back
+    ASSERT_TRUE(s.valid);
+    EXPECT_LT(s.direction.z, 0.0f);
+}
+
+TEST(Fresnel, SchlickAtNormalAndGrazingIncidence) {
+    EXPECT_NEAR(schlick_reflectance(1.0f, 1.5f), 0.04f, 1e-7f);
+    EXPECT_FLOAT_EQ(schlick_reflectance(0.0f, 1.5f), 1.0f);
+    EXPECT_FLOAT_EQ(schlick_reflectance(1.0f, 1.0f), 0.0f);  // index-matched: no reflection
+    float previous = 0.0f;
+    for (float c = 1.0f; c >= 0.0f; c -= 0.01f) {  // monotone towards grazing
+        const float r = schlick_reflectance(c, 1.5f);
+        EXPECT_GE(r, previous);
+        previous = r;
+    }
+}
+
+TEST(Fresnel, SnellsLawAtThirtyDegrees) {
+    const float theta = kPi / 6.0f;
+    const glm::vec3 d(std::sin(theta), 0.0f, -std::cos(theta));
+    const auto r = refract(d, kUp, 1.0f / 1.5f);
+    ASSERT_TRUE(r.has_value());
+    EXPECT_NEAR(r->direction.x, std::sin(theta) / 1.5f, 1e-6f);  // sin_t = sin_i * eta
+    EXPECT_NEAR(glm::length(r->direction), 1.0f, 1e-6f);
+    EXPECT_LT(r->direction.z, 0.0f);
+    EXPECT_NEAR(r->cos_transmitted, -r->direction.z, 1e-6f);
+}
+
+TEST(Fresnel, TotalInternalReflectionAtTheCriticalAngle) {
+    const float critical = std::asin(1.0f / 1.5f);
+    auto ray_at = [](float theta) { return glm::vec3(std::sin(theta), 0.0f, -std::cos(theta)); };
+    EXPECT_TRUE(refract(ray_at(critical - 1e-3f), kUp, 1.5f).has_value());
+    EXPECT_FALSE(refract(ray_at(critical + 1e-3f), kUp, 1.5f).has_value());
+    // Just below the critical angle the refracted ray skims the surface.
+    EXPECT_LT(refract(ray_at(critical - 1e-3f), kUp, 1.5f)->cos_transmitted, 0.1f);
+}
+
+TEST(GlassSampling, ChoosesReflectionWithSchlickProbabilityAndWeightOne) {
+    Material glass;
+    glass.type = MaterialType::glass;
+    glass.ior = 1.5f;
+    const glm::vec3 d(0, 0, -1);  // normal incidence from outside: R = 0.04
+    const BsdfSample reflected = sample_bsdf(glass, kUp, d, 0.5f, 0.5f, 0.039f);
+    const BsdfSample refracted = sample_bsdf(glass, kUp, d, 0.5f, 0.5f, 0.041f);
+    EXPECT_TRUE(reflected.specular && refracted.specular);
+    EXPECT_NEAR(reflected.direction.z, 1.0f, 1e-6f);
+    EXPECT_NEAR(refracted.direction.z, -1.0f, 1e-6f);
+    EXPECT_EQ(reflected.weight, glm::vec3(1.0f));
+    EXPECT_EQ(refracted.weight, glm::vec3(1.0f));
+}
+
+TEST(GlassSampling, InsideBeyondCriticalAngleAlwaysReflects) {
+    Material glass;
+    glass.type = MaterialType::glass;
+    glass.ior = 1.5f;
+    const float theta = std::asin(1.0f / 1.5f) + 0.01f;
+    // From inside: the ray travels along +z towards the surface whose outward normal is +z.
+    const glm::vec3 d(std::sin(theta), 0.0f, std::cos(theta));
+    for (float u : {0.0f, 0.5f, 0.999f}) {
+        const BsdfSample s = sample_bsdf(glass, kUp, d, 0.5f, 0.5f, u);
+        EXPECT_LT(s.direction.z, 0.0f) << "u " << u;  // stays inside
+        EXPECT_NEAR(s.direction.x, d.x, 1e-6f);
+    }
+}
+
+TEST(GlassSampling, LeavingUsesTheOutsideAngleForSchlick) {
+    Material glass;
+    glass.type = MaterialType::glass;
+    glass.ior = 1.5f;
+    const float theta_inside = 0.5f;
+    const glm::vec3 d(std::sin(theta_inside), 0.0f, std::cos(theta_inside));
+    const float sin_out = 1.5f * std::sin(theta_inside);
+    const float r = schlick_reflectance(std::sqrt(1.0f - sin_out * sin_out), 1.5f);
+    // u < R reflects back inside; u >= R refracts out. The inside angle's Schlick value (~0.0400)
+    // differs from the outside angle's (~0.0425) by far more than the 1e-4 probe.
+    EXPECT_LT(sample_bsdf(glass, kUp, d, 0, 0, r - 1e-4f).direction.z, 0.0f);
+    EXPECT_GT(sample_bsdf(glass, kUp, d, 0, 0, r + 1e-4f).direction.z, 0.0f);
+}
+
+TEST(MirrorSampling, ReflectsAboutTheNormalWithItsReflectance) {
+    Material mirror;
+    mirror.type = MaterialType::mirror;
+    mirror.reflectance = glm::vec3(0.9f, 0.8f, 0.7f);
+    const glm::vec3 d = glm::normalize(glm::vec3(1, 2, -3));
+    const BsdfSample s = sample_bsdf(mirror, kUp, d, 0.1f, 0.2f, 0.3f);
+    EXPECT_TRUE(s.specular);
+    EXPECT_NEAR(s.direction.x, d.x, 1e-6f);
+    EXPECT_NEAR(s.direction.y, d.y, 1e-6f);
+    EXPECT_NEAR(s.direction.z, -d.z, 1e-6f);
+    EXPECT_EQ(s.weight, mirror.reflectance);
+}
+
+}  // namespace
+}  // namespace wt

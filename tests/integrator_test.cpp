@@ -1,0 +1,111 @@
+// The wavefront renderer against the scalar reference integrator on the hexroom, and the
+// determinism contract: same scene and seed, same bits, whatever the threads, tiles or batches.
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "render_helpers.h"
+#include "statistics.h"
+#include "test_scenes.h"
+
+namespace wt {
+namespace {
+
+// Independent seeds: a two-sample z-test per pixel and channel, then over the whole image.
+TEST(WavefrontVsReference, AgreeWithinStatisticalToleranceOnHexroom) {
+    const SceneDescription wave_desc = test::hexroom(24, 24, 128, /*seed=*/1);
+    const SceneDescription ref_desc = test::hexroom(24, 24, 128, /*seed=*/2);
+    const test::RenderedFilm wave = test::render_film(wave_desc, Integrator::wavefront);
+    const test::RenderedFilm ref = test::render_film(ref_desc, Integrator::reference);
+    EXPECT_EQ(wave.result.counts.nonfinite_samples, 0u);
+    EXPECT_EQ(ref.result.counts.nonfinite_samples, 0u);
+
+    const int pixels = 24 * 24;
+    const double per_test_alpha = 1e-3;
+    const double z = test::normal_two_sided_quantile(per_test_alpha);
+    // Caustic paths through the glass make some pixels' distributions heavy-tailed; the
+    // binomial allowance absorbs the occasional underestimated variance.
+    const int allowed = test::binomial_upper_bound(3 * pixels, per_test_alpha, 1e-6);
+    int failures = 0;
+    glm::dvec3 diff_sum(0.0), var_sum(0.0);
+    for (uint32_t p = 0; p < uint32_t(pixels); ++p) {
+        const glm::dvec3 d = wave.film.pixel_mean(p) - ref.film.pixel_mean(p);
+        const glm::dvec3 v = wave.film.pixel_sample_variance(p) / double(wave.film.pixel_count(p)) +
+                             ref.film.pixel_sample_variance(p) / double(ref.film.pixel_count(p));
+        for (int c = 0; c < 3; ++c) {
+            if (std::fabs(d[c]) > z * std::sqrt(v[c]) + 1e-9) {
+                ++failures;
+                std::cerr << "pixel " << p << " channel " << c << " differs by " << d[c] << " (sd " << std::sqrt(v[c])
+                          << "); replay: " << test::replay_command("scenes/hexroom.json", wave_desc, p, 0) << "\n";
+            }
+        }
+        diff_sum += d;
+        var_sum += v;
+    }
+    EXPECT_LE(failures, allowed);
+    for (int c = 0; c < 3; ++c) EXPECT_LE(std::fabs(diff_sum[c]), 4.5 * std::sqrt(var_sum[c])) << "channel " << c;
+}
+
+// Both integrators call the same vertex code in the same order, so with the same seed they
+// must agree to the bit: any difference is a scheduling bug in the wavefront driver.
+TEST(WavefrontVsReference, SameSeedGivesTheSameBits) {
+    const SceneDescription d = test::hexroom(20, 20, 8, /*seed=*/5);
+    const test::RenderedFilm wave = test::render_film(d, Integrator::wavefront);
+    const test::RenderedFilm ref = test::render_film(d, Integrator::reference);
+    EXPECT_TRUE(test::films_bit_identical(wave.film, ref.film));
+    EXPECT_EQ(wave.result.counts.camera_rays, ref.result.counts.camera_rays);
+    EXPECT_EQ(wave.result.counts.bounce_rays, ref.result.counts.bounce_rays);
+    EXPECT_EQ(wave.result.counts.shadow_rays, ref.result.counts.shadow_rays);
+}
+
+TEST(Determinism, OneAndTwoThreadsAreBitIdentical) {
+    const SceneDescription d = test::hexroom(32, 32, 8, 3);
+    for (Integrator integrator : {Integrator::wavefront, Integrator::reference}) {
+        const test::RenderedFilm one = test::render_film(d, integrator, 1);
+        const test::RenderedFilm two = test::render_film(d, integrator, 2);
+        EXPECT_TRUE(test::films_bit_identical(one.film, two.film));
+        EXPECT_EQ(one.result.counts.total_rays(), two.result.counts.total_rays());
+    }
+}
+
+TEST(Determinism, AnyTileSizeBatchSizeOrThreadCountGivesTheSameBits) {
+    const SceneDescription d = test::hexroom(21, 19, 6, 4);  // sizes that do not divide evenly
+    const test::RenderedFilm base = test::render_film(d, Integrator::wavefront, 1, 16, 2048);
+    struct Variant {
+        int threads, tile;
+        std::size_t batch;
+    };
+    for (const Variant v : {Variant{2, 1, 1}, Variant{3, 5, 7}, Variant{2, 64, 100000}, Variant{7, 8, 64}}) {
+        const test::RenderedFilm other = test::render_film(d, Integrator::wavefront, v.threads, v.tile, v.batch);
+        EXPECT_TRUE(test::films_bit_identical(base.film, other.film))
+            << "threads " << v.threads << " tile " << v.tile << " batch " << v.batch;
+    }
+}
+
+TEST(Determinism, DifferentSeedsGiveDifferentImages) {
+    const test::RenderedFilm a = test::render_film(test::hexroom(8, 8, 2, 1), Integrator::wavefront);
+    const test::RenderedFilm b = test::render_film(test::hexroom(8, 8, 2, 2), Integrator::wavefront);
+    EXPECT_FALSE(test::films_bit_identical(a.film, b.film));
+}
+
+TEST(RayCounts, MatchTheSettings) {
+    const SceneDescription d = test::hexroom(10, 6, 4, 0);
+    const test::RenderedFilm r = test::render_film(d, Integrator::wavefront);
+    EXPECT_EQ(r.result.counts.camera_rays, 10u * 6u * 4u);
+    EXPECT_EQ(r.result.counts.samples, 10u * 6u * 4u);
+    EXPECT_GT(r.result.counts.bounce_rays, 0u);
+    // At most M shadow rays per camera or bounce ray's hit.
+    EXPECT_LE(r.result.counts.shadow_rays, 3u * (r.result.counts.camera_rays + r.result.counts.bounce_rays));
+    EXPECT_GT(r.result.counts.shadow_rays, r.result.counts.camera_rays);
+}
+
+TEST(EdgeSettings, OnePixelOneSampleAndTilesLargerThanTheImage) {
+    const SceneDescription d = test::hexroom(1, 1, 1, 0);
+    const test::RenderedFilm r = test::render_film(d, Integrator::wavefront, 4, 4096, 1);
+    EXPECT_EQ(r.film.pixel_count(0), 1u);
+    EXPECT_EQ(r.result.counts.nonfinite_samples, 0u);
+}
+
+}  // namespace
+}  // namespace wt

@@ -1,0 +1,154 @@
+// Chi-square goodness-of-fit tests of the sampling routines against their densities, plus the
+// exact properties of the stratified pixel pattern and the light table.
+
+#include <cmath>
+#include <set>
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include "core/light_table.h"
+#include "core/rng.h"
+#include "core/sampling.h"
+#include "statistics.h"
+
+namespace wt {
+namespace {
+
+constexpr double kAlpha = 1e-4;  // false-alarm probability of each goodness-of-fit test
+
+float uniform(uint64_t key, uint32_t i, uint32_t d) { return random_float(key, i, d); }
+
+TEST(RandomFloat, IsUniformOnTheUnitInterval) {
+    const int bins = 64, n = 200000;
+    std::vector<double> observed(bins, 0.0), expected(bins, double(n) / bins);
+    for (int i = 0; i < n; ++i) {
+        const float x = uniform(12345, uint32_t(i), 0);
+        ASSERT_GE(x, 0.0f);
+        ASSERT_LT(x, 1.0f);
+        observed[std::size_t(x * bins)] += 1.0;
+    }
+    EXPECT_GT(test::chi_square_test(observed, expected).p_value, kAlpha);
+}
+
+TEST(RandomFloat, DimensionsAndBouncesAreUncorrelated) {
+    // Joint histogram of consecutive dimensions must be uniform on the square.
+    const int bins = 16, n = 200000;
+    std::vector<double> observed(bins * bins, 0.0), expected(bins * bins, double(n) / (bins * bins));
+    for (int i = 0; i < n; ++i) {
+        const uint64_t key = path_key(3, uint32_t(i), 0);
+        const int a = int(uniform(key, 1, dim::bsdf_u) * bins);
+        const int b = int(uniform(key, 1, dim::bsdf_v) * bins);
+        observed[std::size_t(a * bins + b)] += 1.0;
+    }
+    EXPECT_GT(test::chi_square_test(observed, expected).p_value, kAlpha);
+}
+
+TEST(CosineHemisphere, MatchesItsPdf) {
+    // Under pdf cos(theta)/pi, cos^2(theta) and phi are independent and uniform: equal-probability
+    // bins are a grid in (cos^2 theta, phi).
+    const int nt = 10, np = 20, n = 200000;
+    std::vector<double> observed(nt * np, 0.0), expected(nt * np, double(n) / (nt * np));
+    for (int i = 0; i < n; ++i) {
+        const glm::vec3 w = sample_cosine_hemisphere(uniform(99, uint32_t(i), 0), uniform(99, uint32_t(i), 1));
+        ASSERT_GT(w.z, 0.0f);
+        ASSERT_NEAR(glm::length(w), 1.0f, 1e-5f);
+        const double phi = std::atan2(w.y, w.x) + M_PI;
+        const int it = std::min(nt - 1, int(w.z * w.z * nt));
+        const int ip = std::min(np - 1, int(phi / (2 * M_PI) * np));
+        observed[std::size_t(it * np + ip)] += 1.0;
+    }
+    const auto r = test::chi_square_test(observed, expected);
+    EXPECT_GT(r.p_value, kAlpha) << "chi2 " << r.statistic << " dof " << r.degrees_of_freedom;
+}
+
+TEST(UniformTriangle, MatchesItsPdf) {
+    // Unit right triangle (0,0) (1,0) (0,1): cell (i,j) of an n x n grid covers area 1/n^2 below
+    // the diagonal, half that on it, none above.
+    const int g = 12, n = 200000;
+    std::vector<double> observed(g * g, 0.0), expected(g * g, 0.0);
+    for (int i = 0; i < g; ++i)
+        for (int j = 0; j < g; ++j) expected[std::size_t(i * g + j)] = i + j < g - 1 ? 2.0 * n / (g * g) : i + j == g - 1 ? 1.0 * n / (g * g) : 0.0;
+    for (int k = 0; k < n; ++k) {
+        const glm::vec2 b = sample_uniform_triangle(uniform(5, uint32_t(k), 0), uniform(5, uint32_t(k), 1));
+        ASSERT_GE(b.x, 0.0f);
+        ASSERT_GE(b.y, 0.0f);
+        ASSERT_LE(b.x + b.y, 1.0f + 1e-6f);
+        observed[std::size_t(std::min(g - 1, int(b.x * g)) * g + std::min(g - 1, int(b.y * g)))] += 1.0;
+    }
+    const auto r = test::chi_square_test(observed, expected);
+    EXPECT_GT(r.p_value, kAlpha) << "chi2 " << r.statistic;
+}
+
+TEST(Frame, IsOrthonormalForEveryNormalIncludingStraightDown) {
+    for (const glm::vec3 n : {glm::vec3(0, 0, 1), glm::vec3(0, 0, -1), glm::normalize(glm::vec3(1, 2, 3)),
+                              glm::normalize(glm::vec3(-1e-7f, 0, -1)), glm::vec3(1, 0, 0)}) {
+        const Frame f(n);
+        EXPECT_NEAR(glm::dot(f.tangent, f.bitangent), 0.0f, 1e-6f);
+        EXPECT_NEAR(glm::dot(f.tangent, n), 0.0f, 1e-6f);
+        EXPECT_NEAR(glm::dot(f.bitangent, n), 0.0f, 1e-6f);
+        EXPECT_NEAR(glm::length(f.tangent), 1.0f, 1e-6f);
+        EXPECT_NEAR(glm::length(f.bitangent), 1.0f, 1e-6f);
+    }
+}
+
+TEST(StratifiedPixelOffset, SquareCountsPutOneSampleInEveryStratum) {
+    const uint32_t spp = 64;
+    std::set<std::pair<int, int>> cells;
+    for (uint32_t s = 0; s < spp; ++s) {
+        const glm::vec2 o = stratified_pixel_offset(s, spp, uniform(1, s, 0), uniform(1, s, 1));
+        ASSERT_GE(o.x, 0.0f);
+        ASSERT_LE(o.x, 1.0f);
+        cells.insert({int(o.x * 8), int(o.y * 8)});
+    }
+    EXPECT_EQ(cells.size(), 64u);
+}
+
+TEST(StratifiedPixelOffset, NonSquareCountsAreUniformOverThePixel) {
+    // spp = 10: nine stratified samples plus one uniform; pooled over many pixels the offsets
+    // must be uniform on the pixel, or the pixel estimate would be biased.
+    const uint32_t spp = 10;
+    const int g = 6, pixels = 30000;
+    std::vector<double> observed(g * g, 0.0), expected(g * g, double(pixels) * spp / (g * g));
+    for (int p = 0; p < pixels; ++p) {
+        for (uint32_t s = 0; s < spp; ++s) {
+            const uint64_t key = path_key(0, uint32_t(p), s);
+            const glm::vec2 o = stratified_pixel_offset(s, spp, uniform(key, 0, 0), uniform(key, 0, 1));
+            observed[std::size_t(std::min(g - 1, int(o.x * g)) * g + std::min(g - 1, int(o.y * g)))] += 1.0;
+        }
+    }
+    EXPECT_GT(test::chi_square_test(observed, expected).p_value, kAlpha);
+}
+
+TEST(LightTable, PicksLightsInProportionToAreaWithPdfOneOverTotalArea) {
+    TriangleSoA tris;
+    std::vector<Material> materials(2);
+    materials[0].emission = glm::vec3(5.0f);
+    materials[1].albedo = glm::vec3(0.5f);  // not a light
+    tris.push_back({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0);  // area 0.5
+    tris.push_back({0, 0, 1}, {1, 0, 1}, {0, 1, 1}, 1);  // not emissive
+    tris.push_back({0, 0, 2}, {3, 0, 2}, {0, 1, 2}, 0);  // area 1.5
+    const LightTable lights(tris, materials);
+    ASSERT_EQ(lights.size(), 2u);
+    EXPECT_FLOAT_EQ(lights.total_area(), 2.0f);
+    const int n = 100000;
+    std::vector<double> observed(2, 0.0);
+    for (int i = 0; i < n; ++i) {
+        const LightSample s = lights.sample(tris, uniform(8, uint32_t(i), 0), uniform(8, uint32_t(i), 1), uniform(8, uint32_t(i), 2));
+        EXPECT_FLOAT_EQ(s.pdf_area, 0.5f);
+        EXPECT_EQ(s.radiance, glm::vec3(5.0f));
+        ASSERT_TRUE(s.position.z == 0.0f || s.position.z == 2.0f);
+        observed[s.position.z == 0.0f ? 0 : 1] += 1.0;
+    }
+    EXPECT_GT(test::chi_square_test(observed, {0.25 * n, 0.75 * n}).p_value, kAlpha);
+}
+
+TEST(Statistics, ChiSquareSurvivalMatchesKnownQuantiles) {
+    EXPECT_NEAR(test::chi_square_survival(3.841, 1), 0.05, 1e-4);
+    EXPECT_NEAR(test::chi_square_survival(18.307, 10), 0.05, 1e-4);
+    EXPECT_NEAR(test::chi_square_survival(124.342, 100), 0.05, 1e-4);
+    EXPECT_NEAR(test::normal_two_sided_quantile(0.05), 1.959964, 1e-5);
+}
+
+}  // namespace
+}  // namespace wt

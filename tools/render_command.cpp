@@ -1,0 +1,165 @@
+#include "render_command.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "core/film.h"
+#include "core/image_output.h"
+#include "core/scene.h"
+#include "core/scene_loader.h"
+#include "kernels/reference_integrator.h"
+
+namespace wt {
+
+CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene file to one or more images");
+    cmd->add_option("scene", o.scene_path, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("-o,--output", o.outputs,
+                    "Output image; repeat for several. .exr/.hdr: linear float, .png/.jpg: sRGB 8-bit "
+                    "(default: SCENE's name with .png, in the current directory)");
+    cmd->add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, 1 << 20));
+    cmd->add_option("--shadow-rays", o.shadow_rays, "Shadow rays per diffuse hit")->check(CLI::Range(1, 1024));
+    cmd->add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 65536));
+    cmd->add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, 65536));
+    cmd->add_option("--seed", o.seed, "Random seed");
+    cmd->add_option("--threads", o.render.threads, "Worker threads (default: one per hardware thread)")
+        ->check(CLI::Range(1, 1024));
+    cmd->add_option("--integrator", o.integrator_name, "wavefront (fast) or reference (scalar per-path oracle)")
+        ->check(CLI::IsMember({"wavefront", "reference"}));
+    cmd->add_option("--tile-size", o.render.tile_size, "Tile side in pixels")->check(CLI::Range(1, 65536));
+    cmd->add_option("--batch-paths", o.render.batch_paths, "Camera paths per wavefront batch")
+        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
+    cmd->add_option("--debug-sample", o.debug_sample,
+                    "X,Y,S: trace only sample S of pixel (X,Y) with the reference integrator and print every vertex");
+    cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
+    return cmd;
+}
+
+namespace {
+
+std::string with_si_prefix(double value) {
+    std::ostringstream s;
+    s.precision(3);
+    if (value >= 1e9) s << std::fixed << value / 1e9 << " G";
+    else if (value >= 1e6) s << std::fixed << value / 1e6 << " M";
+    else if (value >= 1e3) s << std::fixed << value / 1e3 << " k";
+    else s << std::fixed << value << " ";
+    return s.str();
+}
+
+// Physical memory, to refuse an image whose film cannot fit before trying to allocate it.
+double physical_memory_bytes() {
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long page_size = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && page_size > 0 ? double(pages) * double(page_size) : 0.0;
+}
+
+DebugSample parse_debug_sample(const std::string& text, int width, int height) {
+    DebugSample d;
+    char comma1 = 0, comma2 = 0;
+    long long x = -1, y = -1, s = -1;
+    std::istringstream in(text);
+    in >> x >> comma1 >> y >> comma2 >> s;
+    if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof())
+        throw std::runtime_error("--debug-sample: expected X,Y,S (three integers), got '" + text + "'");
+    if (x < 0 || x >= width || y < 0 || y >= height)
+        throw std::runtime_error("--debug-sample: pixel (" + std::to_string(x) + "," + std::to_string(y) +
+                                 ") is outside the " + std::to_string(width) + "x" + std::to_string(height) + " image");
+    if (s < 0 || s > 0xffffffffLL) throw std::runtime_error("--debug-sample: sample index out of range: " + std::to_string(s));
+    d.x = int(x), d.y = int(y), d.sample = uint32_t(s);
+    return d;
+}
+
+void print_vec(std::ostream& out, const glm::vec3& v) { out << "(" << v.x << ", " << v.y << ", " << v.z << ")"; }
+
+int replay_sample(const Scene& scene, const DebugSample& d) {
+    RayCounts counts;
+    std::vector<PathVertexRecord> vertices;
+    const uint32_t pixel = uint32_t(d.y) * uint32_t(scene.settings.width) + uint32_t(d.x);
+    const glm::vec3 radiance = trace_reference_path(scene, pixel, d.sample, counts, &vertices);
+    std::cout.precision(9);
+    std::cout << "pixel (" << d.x << "," << d.y << ") sample " << d.sample << " seed " << scene.settings.seed << "\n";
+    for (const PathVertexRecord& v : vertices) {
+        std::cout << "  bounce " << v.bounce << ": t=" << v.hit.t << " prim " << v.hit.prim << " material '"
+                  << scene.materials[v.material].name << "' at ";
+        print_vec(std::cout, v.position);
+        std::cout << " normal ";
+        print_vec(std::cout, v.normal);
+        std::cout << "\n    throughput ";
+        print_vec(std::cout, v.throughput);
+        std::cout << " emission added ";
+        print_vec(std::cout, v.emission_added);
+        std::cout << " shadow rays " << v.shadow_rays_unoccluded << "/" << v.shadow_rays_traced << " unblocked, direct added ";
+        print_vec(std::cout, v.direct_added);
+        std::cout << "\n";
+    }
+    std::cout << "radiance ";
+    print_vec(std::cout, radiance);
+    std::cout << "\n";
+    return 0;
+}
+
+void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
+    if (o.spp) s.spp = *o.spp;
+    if (o.shadow_rays) s.shadow_rays = *o.shadow_rays;
+    if (o.width) s.width = *o.width;
+    if (o.height) s.height = *o.height;
+    if (o.seed) s.seed = *o.seed;
+}
+
+}  // namespace
+
+int run_render_command(RenderCommandOptions& o) {
+    try {
+        SceneDescription description = load_scene_file(o.scene_path);
+        apply_overrides(o, description.settings);
+        const RenderSettings& settings = description.settings;
+        const Scene scene = build_scene(description);
+
+        if (o.debug_sample) return replay_sample(scene, parse_debug_sample(*o.debug_sample, settings.width, settings.height));
+
+        if (o.outputs.empty()) o.outputs.push_back(std::filesystem::path(o.scene_path).stem().string() + ".png");
+        for (const std::string& out : o.outputs) check_output_path(out);
+        const double film_bytes = Film::bytes_needed(settings.width, settings.height);
+        const double memory = physical_memory_bytes();
+        if (memory > 0.0 && film_bytes > 0.5 * memory) {
+            std::ostringstream msg;
+            msg << settings.width << "x" << settings.height << " image needs " << with_si_prefix(film_bytes)
+                << "B of film, more than half of this machine's " << with_si_prefix(memory) << "B of memory";
+            throw std::runtime_error(msg.str());
+        }
+
+        o.render.integrator = o.integrator_name == "reference" ? Integrator::reference : Integrator::wavefront;
+        Film film(settings.width, settings.height);
+        const RenderResult result = render(scene, o.render, film);
+        const std::vector<float> rgb = film.resolve();
+        for (const std::string& out : o.outputs) write_image(out, settings.width, settings.height, rgb);
+
+        if (!o.quiet) {
+            const RayCounts& c = result.counts;
+            const double secs = result.seconds;
+            std::cout << "wavetrace: " << o.scene_path << " " << settings.width << "x" << settings.height << ", "
+                      << settings.spp << " spp, " << settings.shadow_rays << " shadow rays, " << o.integrator_name
+                      << " integrator, " << result.threads << " thread" << (result.threads > 1 ? "s" : "") << "\n";
+            std::cout.precision(3);
+            std::cout << "  wall time        " << std::fixed << secs << " s\n";
+            std::cout << "  samples/s        " << with_si_prefix(double(c.samples) / secs) << "\n";
+            std::cout << "  rays/s           " << with_si_prefix(double(c.total_rays()) / secs) << "(camera "
+                      << with_si_prefix(double(c.camera_rays)) << "+ bounce " << with_si_prefix(double(c.bounce_rays))
+                      << "+ shadow " << with_si_prefix(double(c.shadow_rays)) << "rays)\n";
+            std::cout << "  NaN/Inf samples  " << c.nonfinite_samples << "\n";
+            for (const std::string& out : o.outputs) std::cout << "  wrote            " << out << "\n";
+        }
+        return 0;
+    } catch (const std::exception& e) {
+        std::cerr << "wavetrace: error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace wt

@@ -1,0 +1,37 @@
+#pragma once
+// `wavetrace render`: its options, as parsed from the command line, and the command itself.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "kernels/renderer.h"
+
+namespace wt {
+
+struct DebugSample {
+    int x = 0, y = 0;
+    uint32_t sample = 0;
+};
+
+struct RenderCommandOptions {
+    std::string scene_path;
+    std::vector<std::string> outputs;
+    // Overrides of the scene's render settings; unset means "as the scene says".
+    std::optional<int> spp, shadow_rays, width, height;
+    std::optional<uint64_t> seed;
+    RenderOptions render;
+    std::string integrator_name = "wavefront";
+    std::optional<std::string> debug_sample;  // "X,Y,S": replay one sample instead of rendering
+    bool quiet = false;
+};
+
+// Registers the subcommand's options on `app`, writing into `options`.
+CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& options);
+
+// Runs the command; returns the process exit code. Errors are printed, never thrown.
+int run_render_command(RenderCommandOptions& options);
+
+}  // namespace wt
