@@ -49,8 +49,8 @@ void check_output_path(const std::string& path) {
 
 float linear_to_srgb(float linear) {
     const float c = std::clamp(linear, 0.0f, 1.0f);
-    // The clamp on the result: 1.055 * 1 - 0.055 rounds to just below 1 in float.
-    return c <= 0.0031308f ? 12.92f * c : std::min(1.0f, 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f);
+    if (c >= 1.0f) return 1.0f;  // the formula gives 1.055 - 0.055, which rounds just below 1
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
 void write_image(const std::string& path, int width, int height, const std::vector<float>& rgb) {
