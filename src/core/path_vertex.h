@@ -31,6 +31,12 @@ inline glm::vec3 emitted_towards(const Material& m, const glm::vec3& n_geom, con
     return glm::dot(d, n_geom) < 0.0f ? m.emission : glm::vec3(0.0f);
 }
 
+// Whether a vertex with this material samples the lights: diffuse and not black (an emitter
+// with albedo 0, like the hexroom's light, reflects nothing, so its shadow rays would be wasted).
+inline bool gathers_direct_light(const Material& m) {
+    return !m.is_specular() && (m.albedo.x > 0.0f || m.albedo.y > 0.0f || m.albedo.z > 0.0f);
+}
+
 struct ShadowRay {
     Ray ray;
     float tmax;              // distance to (just short of) the light point

@@ -27,7 +27,7 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
             vertex.emission_added = throughput * emitted_towards(m, surface.normal, ray.direction);
             radiance += vertex.emission_added;
         }
-        if (!m.is_specular() && !scene.lights.empty()) {
+        if (!scene.lights.empty() && gathers_direct_light(m)) {
             for (uint32_t j = 0; j < shadow_ray_count; ++j) {
                 const auto shadow = sample_light(scene, m, surface, ray.direction, throughput, key, bounce, j, shadow_ray_count);
                 if (!shadow) continue;

@@ -22,7 +22,7 @@ void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         const Material& m = scene.materials[surface.material];
 
         if (rays.count_emission[i]) paths.add_radiance(slot, throughput * emitted_towards(m, surface.normal, ray.direction));
-        if (has_lights && !m.is_specular()) {
+        if (has_lights && gathers_direct_light(m)) {
             for (uint32_t j = 0; j < shadow_ray_count; ++j) {
                 const auto shadow = sample_light(scene, m, surface, ray.direction, throughput, key, bounce, j, shadow_ray_count);
                 if (shadow) shadows.push(*shadow, slot);

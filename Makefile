@@ -1,0 +1,28 @@
+# The two commands a new user needs, plus the steps they are made of.
+#   make render   install what is missing, build Release, render the reference scene
+#   make test     install what is missing, build, run the whole test suite
+BUILD_DIR ?= build
+JOBS ?= $(shell nproc)
+SCENE ?= scenes/hexroom.json
+RENDER_DIR ?= renders
+
+.PHONY: render test build deps configure clean
+
+render: build
+	mkdir -p $(RENDER_DIR)
+	$(BUILD_DIR)/bin/wavetrace render $(SCENE) -o $(RENDER_DIR)/hexroom.png -o $(RENDER_DIR)/hexroom.exr
+
+test: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE long
+
+deps:
+	tools/install-deps.sh
+
+configure: deps
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release
+
+build: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+clean:
+	rm -rf $(BUILD_DIR)

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages wavetrace needs to build and test, skipping any already there.
+# Safe to run again; does nothing when everything is installed.
+set -euo pipefail
+
+packages=(
+  g++ cmake make                # toolchain
+  libglm-dev                    # vector maths
+  libopenimageio-dev            # image output (.exr, .png)
+  libopencv-core-dev            # Debian 12's OpenImageIO CMake target names /usr/include/opencv4
+  nlohmann-json3-dev            # scene files
+  libcli11-dev                  # command line
+  libgtest-dev                  # tests
+  libbenchmark-dev              # benchmarks
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "wavetrace: installing missing Debian packages: ${missing[*]}"
+if [ "$(id -u)" -eq 0 ]; then
+  sudo=()
+elif command -v sudo >/dev/null 2>&1; then
+  sudo=(sudo)
+else
+  echo "wavetrace: not root and no sudo; install them with: apt-get install ${missing[*]}" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
