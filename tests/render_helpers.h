@@ -1,6 +1,9 @@
 #pragma once
 // Rendering a scene description into a film in one call, for the integrator tests.
 
+#include <optional>
+#include <string>
+
 #include "core/film.h"
 #include "core/scene.h"
 #include "kernels/renderer.h"
@@ -13,13 +16,14 @@ struct RenderedFilm {
 };
 
 inline RenderedFilm render_film(const SceneDescription& description, Integrator integrator, int threads = 2,
-                                int tile_size = 16, std::size_t batch_paths = 2048) {
+                                int tile_size = 16, std::size_t batch_paths = 2048, std::optional<Isa> isa = {}) {
     const Scene scene = build_scene(description);
     RenderOptions options;
     options.integrator = integrator;
     options.threads = threads;
     options.tile_size = tile_size;
     options.batch_paths = batch_paths;
+    options.isa = isa;
     RenderedFilm out{Film(description.settings.width, description.settings.height), {}};
     out.result = render(scene, options, out.film);
     return out;

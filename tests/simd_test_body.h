@@ -631,8 +631,9 @@ TYPED_TEST_P(SimdWidth, AbsSqrtRcpRsqrtFloorCeil) {
     EXPECT_EQ(float_to_bits(ceil(F(-0.5f))[0]), 0x80000000u);
 }
 
-// The stated bound for rcp_fast / rsqrt_fast (vfloat.h), in ulp of the exact rcp / rsqrt.
-constexpr int64_t kFastUlpBound = 4;
+// The stated bounds for rcp_fast / rsqrt_fast (vfloat.h), in ulp of the exact rcp / rsqrt.
+constexpr int64_t kRcpFastUlpBound = 4;
+constexpr int64_t kRsqrtFastUlpBound = 5;
 
 TYPED_TEST_P(SimdWidth, FastReciprocalsWithinUlpBound) {
     using W = TypeParam;
@@ -670,10 +671,10 @@ TYPED_TEST_P(SimdWidth, FastReciprocalsWithinUlpBound) {
         const F in_rcp_range = select(abs(x) < F(std::ldexp(1.0f, 125)), x, F(1.0f));
         track(worst_rcp, rcp_fast(in_rcp_range), rcp(in_rcp_range));
     }
-    EXPECT_LE(worst_rcp, kFastUlpBound);
-    EXPECT_LE(worst_rsqrt, kFastUlpBound);
-    RecordProperty("worst_rcp_fast_ulp", static_cast<int>(worst_rcp));
-    RecordProperty("worst_rsqrt_fast_ulp", static_cast<int>(worst_rsqrt));
+    EXPECT_LE(worst_rcp, kRcpFastUlpBound);
+    EXPECT_LE(worst_rsqrt, kRsqrtFastUlpBound);
+    ::testing::Test::RecordProperty("worst_rcp_fast_ulp", static_cast<int>(worst_rcp));
+    ::testing::Test::RecordProperty("worst_rsqrt_fast_ulp", static_cast<int>(worst_rsqrt));
     std::printf("  [w%d] worst rcp_fast: %lld ulp, worst rsqrt_fast: %lld ulp\n", n, static_cast<long long>(worst_rcp),
                 static_cast<long long>(worst_rsqrt));
 
@@ -693,12 +694,12 @@ TYPED_TEST_P(SimdWidth, FastReciprocalsWithinUlpBound) {
     for (uint32_t u : {0x00000001u, 0x00400000u, 0x007fffffu, 0x80200000u, 0x7f000001u, 0x7f7fffffu, 0xff7fffffu}) {
         const float x = bits_to_float(u);
         const float q = rcp_fast(F(x))[0], want = rcp(F(x))[0];
-        EXPECT_TRUE(ulp_distance(q, want) <= kFastUlpBound || (std::isinf(q) && std::signbit(q) == std::signbit(x)) ||
+        EXPECT_TRUE(ulp_distance(q, want) <= kRcpFastUlpBound || (std::isinf(q) && std::signbit(q) == std::signbit(x)) ||
                     (q == 0.0f && std::signbit(q) == std::signbit(x)))
             << "rcp_fast(" << show(x) << ") = " << show(q);
         if (x > 0.0f) {
             const float r = rsqrt_fast(F(x))[0], want_r = rsqrt(F(x))[0];
-            EXPECT_TRUE(ulp_distance(r, want_r) <= kFastUlpBound || r == kInf)
+            EXPECT_TRUE(ulp_distance(r, want_r) <= kRsqrtFastUlpBound || r == kInf)
                 << "rsqrt_fast(" << show(x) << ") = " << show(r);
         }
     }
@@ -852,8 +853,6 @@ TYPED_TEST_P(SimdWidth, SelectMinIndex) {
             const int got = select_min_index(B::from_bits(bits), F::loadu(v.data()));
             const int want = oracle(bits, v);
             ASSERT_EQ(got, want) << "mask " << bits << " variant " << variant;
-            // And against width 1 for the lane it picked.
-            if (want >= 0) ASSERT_EQ(select_min_index(vbool<1>(true), vfloat<1>(v[want])), 0);
         }
     }
     EXPECT_EQ(select_min_index(B(true), F(std::nanf(""))), -1);
@@ -951,7 +950,12 @@ REGISTER_TYPED_TEST_SUITE_P(SimdWidth, TraitsStepBroadcastAndLaneAccess, Aligned
 // Suite 2: width 1 (the oracle) against hand-written expectations, as compiled in this TU.
 
 template <typename W>
-class ScalarReference : public ::testing::Test {};
+class ScalarReference : public ::testing::Test {
+protected:
+    void SetUp() override {  // width 1 is compiled with the TU's flags too (std::fma -> vfmadd)
+        if (!tu_cpu_supported()) GTEST_SKIP() << "this CPU lacks " << WT_SIMD_TEST_ISA_NAME;
+    }
+};
 TYPED_TEST_SUITE_P(ScalarReference);
 
 TYPED_TEST_P(ScalarReference, FloatSemantics) {

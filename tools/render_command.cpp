@@ -12,6 +12,7 @@
 #include "core/image_output.h"
 #include "core/scene.h"
 #include "core/scene_loader.h"
+#include "kernels/intersect_dispatch.h"
 #include "kernels/reference_integrator.h"
 
 namespace wt {
@@ -31,6 +32,8 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--integrator", o.integrator_name, "wavefront (fast) or reference (scalar per-path oracle)")
         ->check(CLI::IsMember({"wavefront", "reference"}));
+    cmd->add_option("--isa", o.isa_name, "Intersection kernels: scalar, sse4, avx2, avx512 or auto (the best this CPU runs)")
+        ->check(CLI::IsMember({"auto", "scalar", "sse4", "avx2", "avx512"}));
     cmd->add_option("--tile-size", o.render.tile_size, "Tile side in pixels")->check(CLI::Range(1, 65536));
     cmd->add_option("--batch-paths", o.render.batch_paths, "Camera paths per wavefront batch")
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
@@ -48,7 +51,7 @@ std::string with_si_prefix(double value) {
     if (value >= 1e9) s << std::fixed << value / 1e9 << " G";
     else if (value >= 1e6) s << std::fixed << value / 1e6 << " M";
     else if (value >= 1e3) s << std::fixed << value / 1e3 << " k";
-    else s << std::fixed << value << " ";
+    else s << std::fixed << value;
     return s.str();
 }
 
@@ -130,11 +133,15 @@ int run_render_command(RenderCommandOptions& o) {
         if (memory > 0.0 && film_bytes > 0.5 * memory) {
             std::ostringstream msg;
             msg << settings.width << "x" << settings.height << " image needs " << with_si_prefix(film_bytes)
-                << "B of film, more than half of this machine's " << with_si_prefix(memory) << "B of memory";
+                << "B of film memory, more than half of this machine's " << with_si_prefix(memory) << "B";
             throw std::runtime_error(msg.str());
         }
 
         o.render.integrator = o.integrator_name == "reference" ? Integrator::reference : Integrator::wavefront;
+        if (o.isa_name != "auto") {
+            o.render.isa = parse_isa(o.isa_name);
+            if (!cpu_supports(*o.render.isa)) throw std::runtime_error("--isa " + o.isa_name + ": this CPU does not support it");
+        }
         Film film(settings.width, settings.height);
         const RenderResult result = render(scene, o.render, film);
         const std::vector<float> rgb = film.resolve();
@@ -145,13 +152,14 @@ int run_render_command(RenderCommandOptions& o) {
             const double secs = result.seconds;
             std::cout << "wavetrace: " << o.scene_path << " " << settings.width << "x" << settings.height << ", "
                       << settings.spp << " spp, " << settings.shadow_rays << " shadow rays, " << o.integrator_name
-                      << " integrator, " << result.threads << " thread" << (result.threads > 1 ? "s" : "") << "\n";
+                      << " integrator" << (o.render.integrator == Integrator::wavefront ? std::string(" (") + isa_name(result.isa) + " kernels)" : "")
+                      << ", " << result.threads << " thread" << (result.threads > 1 ? "s" : "") << "\n";
             std::cout.precision(3);
             std::cout << "  wall time        " << std::fixed << secs << " s\n";
             std::cout << "  samples/s        " << with_si_prefix(double(c.samples) / secs) << "\n";
-            std::cout << "  rays/s           " << with_si_prefix(double(c.total_rays()) / secs) << "(camera "
-                      << with_si_prefix(double(c.camera_rays)) << "+ bounce " << with_si_prefix(double(c.bounce_rays))
-                      << "+ shadow " << with_si_prefix(double(c.shadow_rays)) << "rays)\n";
+            std::cout << "  rays/s           " << with_si_prefix(double(c.total_rays()) / secs) << " (camera "
+                      << with_si_prefix(double(c.camera_rays)) << ", bounce " << with_si_prefix(double(c.bounce_rays))
+                      << ", shadow " << with_si_prefix(double(c.shadow_rays)) << " rays)\n";
             std::cout << "  NaN/Inf samples  " << c.nonfinite_samples << "\n";
             for (const std::string& out : o.outputs) std::cout << "  wrote            " << out << "\n";
         }

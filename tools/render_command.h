@@ -24,6 +24,7 @@ struct RenderCommandOptions {
     std::optional<uint64_t> seed;
     RenderOptions render;
     std::string integrator_name = "wavefront";
+    std::string isa_name = "auto";
     std::optional<std::string> debug_sample;  // "X,Y,S": replay one sample instead of rendering
     bool quiet = false;
 };

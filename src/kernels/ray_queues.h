@@ -69,11 +69,12 @@ struct ShadowQueue {
     AlignedVector<float> ox, oy, oz, dx, dy, dz, tmax;
     AlignedVector<float> contribution_r, contribution_g, contribution_b;
     AlignedVector<uint32_t> path;
+    AlignedVector<uint8_t> occluded;  // written by the any-hit kernel
     std::size_t count = 0;
 
     void reserve(std::size_t n) {
         for (auto* a : {&ox, &oy, &oz, &dx, &dy, &dz, &tmax, &contribution_r, &contribution_g, &contribution_b}) a->resize(n);
-        path.resize(n);
+        path.resize(n), occluded.resize(n);
     }
     void push(const ShadowRay& s, uint32_t slot) {
         const std::size_t i = count++;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/thread_pool.h"
+#include "kernels/intersect_dispatch.h"
 #include "kernels/reference_integrator.h"
 #include "kernels/tiles.h"
 #include "kernels/wavefront_renderer.h"
@@ -28,6 +29,9 @@ RenderResult render(const Scene& scene, const RenderOptions& options, Film& film
     // Created by the worker that uses it, on first use, so its pages live near that core.
     std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces(static_cast<std::size_t>(threads));
 
+    const Isa isa = options.isa.value_or(best_supported_isa());
+    const IntersectContext context{scene_view(scene), &intersect_kernels(isa)};
+
     ThreadPool pool(threads);
     const auto start = std::chrono::steady_clock::now();
     pool.parallel_for(tiles.size(), [&](std::size_t item, int worker) {
@@ -45,7 +49,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, Film& film
             const std::size_t capacity = std::max(options.batch_paths, tile_pixels);
             ws = std::make_unique<WavefrontWorkspace>(capacity, std::size_t(scene.settings.shadow_rays));
         }
-        render_wavefront_tile(scene, tile, options.batch_paths, *ws, film, c);
+        render_wavefront_tile(scene, context, tile, options.batch_paths, *ws, film, c);
     });
     const auto stop = std::chrono::steady_clock::now();
 
@@ -53,6 +57,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, Film& film
     for (const RayCounts& c : counts) result.counts += c;
     result.seconds = std::chrono::duration<double>(stop - start).count();
     result.threads = threads;
+    result.isa = isa;
     return result;
 }
 

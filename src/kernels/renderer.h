@@ -2,9 +2,11 @@
 // Entry point: renders a scene into a film with either integrator on a pool of threads.
 
 #include <cstddef>
+#include <optional>
 
 #include "core/film.h"
 #include "core/scene.h"
+#include "kernels/intersect_kernels.h"
 #include "kernels/render_stats.h"
 
 namespace wt {
@@ -16,12 +18,14 @@ struct RenderOptions {
     int threads = 0;                 // 0: one per hardware thread
     int tile_size = 16;              // pixels per tile side
     std::size_t batch_paths = 2048;  // camera paths per wavefront batch: queues sized to stay in L2
+    std::optional<Isa> isa;          // intersection kernels; empty: the best this CPU runs
 };
 
 struct RenderResult {
     RayCounts counts;
     double seconds = 0.0;  // wall time of the rendering itself (no loading, no writing)
     int threads = 1;
+    Isa isa = Isa::scalar;  // kernels the wavefront integrator used
 };
 
 // The film must match the scene's resolution. Deterministic: the same scene (including seed)

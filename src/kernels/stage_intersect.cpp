@@ -1,10 +1,12 @@
-#include "kernels/scene_intersect.h"
+#include "kernels/intersect_dispatch.h"
 #include "kernels/stages.h"
 
 namespace wt {
 
-void intersect_closest_stage(const Scene& scene, const RayQueue& rays, HitQueue& hits) {
-    for (std::size_t i = 0; i < rays.count; ++i) hits.set(i, intersect_closest(scene, rays.ray(i)));
+// Rays of a queue go in packets of N against one primitive at a time: on the flat primitive
+// list of a small scene this beat one ray against N primitives (bench/README.md).
+void intersect_closest_stage(const IntersectContext& context, const RayQueue& rays, HitQueue& hits) {
+    context.kernels->closest_raypacket(context.scene, ray_view(rays), hit_view(hits));
 }
 
 }  // namespace wt

@@ -1,12 +1,13 @@
-#include "kernels/scene_intersect.h"
+#include "kernels/intersect_dispatch.h"
 #include "kernels/stages.h"
 
 namespace wt {
 
-void shadow_stage(const Scene& scene, const ShadowQueue& shadows, PathTable& paths) {
-    for (std::size_t i = 0; i < shadows.count; ++i) {
-        if (!intersect_any(scene, shadows.ray(i), shadows.tmax[i])) paths.add_radiance(shadows.path[i], shadows.contribution(i));
-    }
+void shadow_stage(const IntersectContext& context, ShadowQueue& shadows, PathTable& paths) {
+    context.kernels->any_raypacket(context.scene, ray_view(shadows), shadows.occluded.data());
+    // In queue order, so each path adds its shadow rays' light in the order they were cast.
+    for (std::size_t i = 0; i < shadows.count; ++i)
+        if (!shadows.occluded[i]) paths.add_radiance(shadows.path[i], shadows.contribution(i));
 }
 
 }  // namespace wt

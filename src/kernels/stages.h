@@ -4,6 +4,7 @@
 
 #include "core/film.h"
 #include "core/scene.h"
+#include "kernels/intersect_kernels.h"
 #include "kernels/ray_queues.h"
 #include "kernels/render_stats.h"
 #include "kernels/tiles.h"
@@ -15,14 +16,20 @@ namespace wt {
 void generate_camera_rays(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end,
                           PathTable& paths, RayQueue& rays);
 
+// What the intersect and shadow stages trace against, and with which kernels.
+struct IntersectContext {
+    SceneView scene;
+    const IntersectKernels* kernels;
+};
+
 // Closest hit of every ray in the queue.
-void intersect_closest_stage(const Scene& scene, const RayQueue& rays, HitQueue& hits);
+void intersect_closest_stage(const IntersectContext& context, const RayQueue& rays, HitQueue& hits);
 
 // Emission, light samples into `shadows`, and surviving continuations into `next_rays`.
 void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
                  RayQueue& next_rays, ShadowQueue& shadows);
 
 // Any-hit test of every shadow ray; unblocked ones add their contribution to their path.
-void shadow_stage(const Scene& scene, const ShadowQueue& shadows, PathTable& paths);
+void shadow_stage(const IntersectContext& context, ShadowQueue& shadows, PathTable& paths);
 
 }  // namespace wt

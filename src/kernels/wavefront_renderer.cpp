@@ -6,7 +6,7 @@
 
 namespace wt {
 
-void render_wavefront_tile(const Scene& scene, const Tile& tile, std::size_t batch_paths, WavefrontWorkspace& ws,
+void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, std::size_t batch_paths, WavefrontWorkspace& ws,
                            Film& film, RayCounts& counts) {
     const uint32_t spp = uint32_t(scene.settings.spp);
     const uint32_t step = samples_per_batch(tile, batch_paths, scene.settings.spp);
@@ -17,9 +17,9 @@ void render_wavefront_tile(const Scene& scene, const Tile& tile, std::size_t bat
         const std::size_t batch_size = ws.rays.count;
 
         for (uint32_t bounce = 0; ws.rays.count > 0; ++bounce) {
-            intersect_closest_stage(scene, ws.rays, ws.hits);
+            intersect_closest_stage(context, ws.rays, ws.hits);
             shade_stage(scene, bounce, ws.rays, ws.hits, ws.paths, ws.next_rays, ws.shadows);
-            shadow_stage(scene, ws.shadows, ws.paths);
+            shadow_stage(context, ws.shadows, ws.paths);
             counts.shadow_rays += ws.shadows.count;
             counts.bounce_rays += ws.next_rays.count;
             std::swap(ws.rays, ws.next_rays);

@@ -7,6 +7,7 @@
 #include "core/scene.h"
 #include "kernels/ray_queues.h"
 #include "kernels/render_stats.h"
+#include "kernels/stages.h"
 #include "kernels/tiles.h"
 
 namespace wt {
@@ -17,7 +18,7 @@ inline uint32_t samples_per_batch(const Tile& tile, std::size_t batch_paths, int
     return uint32_t(std::min<std::size_t>(per_batch, std::size_t(spp)));
 }
 
-void render_wavefront_tile(const Scene& scene, const Tile& tile, std::size_t batch_paths, WavefrontWorkspace& workspace,
+void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, std::size_t batch_paths, WavefrontWorkspace& workspace,
                            Film& film, RayCounts& counts);
 
 }  // namespace wt

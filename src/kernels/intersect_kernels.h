@@ -1,0 +1,34 @@
+#pragma once
+// The SIMD intersection kernels, compiled once per instruction set and picked at run time.
+// Only plain declarations here: this header is included by the per-ISA translation units.
+
+#include <cstdint>
+
+#include "kernels/soa_views.h"
+
+namespace wt {
+
+enum class Isa : uint8_t { scalar, sse4, avx2, avx512 };
+
+// Two ways to put SIMD lanes to work on a flat primitive list:
+//   ray packet  - N rays from the queue against one primitive at a time (primitive broadcast)
+//   prim packet - one ray against N primitives at a time (SoA primitive loads, then a
+//                 horizontal reduction for the closest)
+// Both give the same answers; bench_intersect measures which is faster per query.
+struct IntersectKernels {
+    Isa isa;
+    int width;
+    void (*closest_raypacket)(const SceneView&, const RayView&, const HitView&);
+    void (*closest_primpacket)(const SceneView&, const RayView&, const HitView&);
+    // occluded[i] = 1 if anything lies at t in (0, tmax[i]) along ray i, else 0.
+    void (*any_raypacket)(const SceneView&, const RayView&, uint8_t* occluded);
+    void (*any_primpacket)(const SceneView&, const RayView&, uint8_t* occluded);
+};
+
+// Defined in intersect_<isa>.cpp, each compiled with its own target flags.
+extern const IntersectKernels kIntersectScalar;
+extern const IntersectKernels kIntersectSse4;
+extern const IntersectKernels kIntersectAvx2;
+extern const IntersectKernels kIntersectAvx512;
+
+}  // namespace wt

@@ -1,0 +1,42 @@
+#pragma once
+// Plain pointer views of the SoA buffers, the only scene and queue types the per-ISA kernel
+// translation units see. They hold no inline functions and pull in no STL or GLM: any inline
+// function compiled into an -mavx512f translation unit could be the copy the linker keeps for
+// the whole program, and would then crash a CPU without AVX-512 (see simd/isa.h).
+
+#include <cstdint>
+
+namespace wt {
+
+struct TriangleView {
+    const float *v0x, *v0y, *v0z;
+    const float *e1x, *e1y, *e1z;
+    const float *e2x, *e2y, *e2z;
+    uint32_t count;
+};
+
+struct SphereView {
+    const float *cx, *cy, *cz, *radius;
+    uint32_t count;
+    uint32_t first_prim;  // id of sphere 0 in the shared primitive index space (= triangle count)
+};
+
+struct SceneView {
+    TriangleView triangles;
+    SphereView spheres;
+};
+
+struct RayView {
+    const float *ox, *oy, *oz;
+    const float *dx, *dy, *dz;  // unit length
+    const float* tmax;          // per ray; nullptr means +infinity
+    uint32_t count;
+};
+
+// Closest-hit results; prim is UINT32_MAX (kNoHit) for a miss, t is then +infinity.
+struct HitView {
+    float *t, *u, *v;
+    uint32_t* prim;
+};
+
+}  // namespace wt
