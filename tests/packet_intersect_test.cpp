@@ -1,5 +1,5 @@
 // The SIMD kernels against the scalar textbook intersection (primitive_intersect.h), for every
-// ISA this CPU runs and both layouts: a million random rays in the hexroom, rays through
+// ISA this CPU runs, both layouts and every accuracy variant: millions of random rays in the hexroom, rays through
 // vertices and edges, rays in the planes of walls, origins on surfaces, every partial packet.
 // The kernels do the textbook's arithmetic in the textbook's order without FMA, so the answer
 // must be the same to the bit: same primitive, same t, u and v.
@@ -81,19 +81,37 @@ RayBatch hexroom_rays(const Scene& scene, int random_count) {
     return b;
 }
 
+// Per accuracy variant, so 1M rays in all in CI; the `long` label runs 4M per variant.
+#ifndef WT_LONG_TESTS
+#define WT_LONG_TESTS 0
+#endif
+constexpr int kRandomRays = WT_LONG_TESTS ? 1 << 22 : 1 << 18;
+
 class PacketIntersect : public ::testing::TestWithParam<Isa> {
 protected:
     void SetUp() override {
         if (!cpu_supports(GetParam())) GTEST_SKIP() << "CPU lacks " << isa_name(GetParam());
         scene_ = build_scene(test::hexroom(8, 8, 1));
-        rays_ = hexroom_rays(scene_, 1 << 20);
+        rays_ = hexroom_rays(scene_, kRandomRays);
     }
     Scene scene_;
     RayBatch rays_;
 };
 
+// Every accuracy combination: Moller-Trumbore or watertight triangles, quadratic or
+// cancellation-free spheres.
+std::vector<AccuracySettings> accuracy_variants() {
+    std::vector<AccuracySettings> all;
+    for (TriangleTest t : {TriangleTest::moller_trumbore, TriangleTest::watertight})
+        for (SphereTest s : {SphereTest::quadratic, SphereTest::cancellation_free}) all.push_back({t, s, FresnelModel::schlick});
+    return all;
+}
+
 TEST_P(PacketIntersect, ClosestHitEqualsScalarInBothLayouts) {
-    const IntersectKernels& k = intersect_kernels(GetParam());
+  for (const AccuracySettings& accuracy : accuracy_variants()) {
+    SCOPED_TRACE(std::string(name_of(accuracy.triangles)) + " + " + name_of(accuracy.spheres));
+    scene_.settings.accuracy = accuracy;
+    const IntersectKernels& k = intersect_kernels(GetParam(), accuracy);
     const SceneView view = scene_view(scene_);
     const std::size_t n = rays_.ox.size();
     for (auto closest : {k.closest_raypacket, k.closest_primpacket}) {
@@ -110,17 +128,22 @@ TEST_P(PacketIntersect, ClosestHitEqualsScalarInBothLayouts) {
             }
         }
     }
+  }
 }
 
 TEST_P(PacketIntersect, AnyHitEqualsScalarInBothLayouts) {
-    const IntersectKernels& k = intersect_kernels(GetParam());
-    const SceneView view = scene_view(scene_);
-    const std::size_t n = rays_.ox.size();
-    for (auto any : {k.any_raypacket, k.any_primpacket}) {
-        std::vector<uint8_t> occluded(n, 7);
-        any(view, rays_.view(true), occluded.data());
-        for (std::size_t i = 0; i < n; ++i)
-            ASSERT_EQ(occluded[i], uint8_t(intersect_any(scene_, rays_.ray(i), rays_.tmax[i]))) << "ray " << i;
+    for (const AccuracySettings& accuracy : accuracy_variants()) {
+        SCOPED_TRACE(std::string(name_of(accuracy.triangles)) + " + " + name_of(accuracy.spheres));
+        scene_.settings.accuracy = accuracy;
+        const IntersectKernels& k = intersect_kernels(GetParam(), accuracy);
+        const SceneView view = scene_view(scene_);
+        const std::size_t n = rays_.ox.size();
+        for (auto any : {k.any_raypacket, k.any_primpacket}) {
+            std::vector<uint8_t> occluded(n, 7);
+            any(view, rays_.view(true), occluded.data());
+            for (std::size_t i = 0; i < n; ++i)
+                ASSERT_EQ(occluded[i], uint8_t(intersect_any(scene_, rays_.ray(i), rays_.tmax[i]))) << "ray " << i;
+        }
     }
 }
 

@@ -23,6 +23,9 @@ using wt::SceneDescription;
 using wt::SceneError;
 using wt::parse_scene_json;
 using wt::TriangleMesh;
+using wt::TriangleTest;
+using wt::SphereTest;
+using wt::FresnelModel;
 using Json = nlohmann::ordered_json;
 
 const std::string kSource = "test.json";
@@ -411,7 +414,27 @@ TEST(SceneErrors, UnknownCameraKey) {
 TEST(SceneErrors, UnknownRenderKey) {
     expect_scene_error(mutated([](Json& j) { j["render"]["samples"] = 4; }),
                        "render.samples: unknown key (allowed: width, height, spp, shadow_rays, seed, max_bounces, "
-                       "rr_start_bounce)");
+                       "rr_start_bounce, triangle_test, sphere_test, fresnel)");
+}
+
+TEST(SceneErrors, UnknownAccuracyChoice) {
+    expect_scene_error(mutated([](Json& j) { j["render"]["triangle_test"] = "exact"; }),
+                       "render.triangle_test: must be one of \"moller_trumbore\", \"watertight\", got string \"exact\"");
+    expect_scene_error(mutated([](Json& j) { j["render"]["sphere_test"] = 3; }), "render.sphere_test: expected a string");
+    expect_scene_error(mutated([](Json& j) { j["render"]["fresnel"] = "fast"; }), "render.fresnel: must be one of");
+}
+
+TEST(SceneLoader, ReadsAccuracyOptions) {
+    const SceneDescription d = parse_scene_json(
+        mutated([](Json& j) {
+            j["render"]["triangle_test"] = "watertight";
+            j["render"]["sphere_test"] = "cancellation_free";
+            j["render"]["fresnel"] = "exact";
+        }),
+        "test.json");
+    EXPECT_EQ(d.settings.accuracy.triangles, TriangleTest::watertight);
+    EXPECT_EQ(d.settings.accuracy.spheres, SphereTest::cancellation_free);
+    EXPECT_EQ(d.settings.accuracy.fresnel, FresnelModel::exact);
 }
 
 TEST(SceneErrors, UnknownMaterialKey) {

@@ -32,6 +32,12 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--integrator", o.integrator_name, "wavefront (fast) or reference (scalar per-path oracle)")
         ->check(CLI::IsMember({"wavefront", "reference"}));
+    cmd->add_option("--triangle-test", o.triangle_test, "moller_trumbore (fast) or watertight (no leaks at shared edges)")
+        ->check(CLI::IsMember({"moller_trumbore", "watertight"}));
+    cmd->add_option("--sphere-test", o.sphere_test, "quadratic (fast) or cancellation_free (small and distant spheres)")
+        ->check(CLI::IsMember({"quadratic", "cancellation_free"}));
+    cmd->add_option("--fresnel", o.fresnel, "schlick (approximation) or exact (dielectric Fresnel equations)")
+        ->check(CLI::IsMember({"schlick", "exact"}));
     cmd->add_option("--isa", o.isa_name, "Intersection kernels: scalar, sse4, avx2, avx512 or auto (the best this CPU runs)")
         ->check(CLI::IsMember({"auto", "scalar", "sse4", "avx2", "avx512"}));
     cmd->add_option("--tile-size", o.render.tile_size, "Tile side in pixels")->check(CLI::Range(1, 65536));
@@ -113,6 +119,10 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.width) s.width = *o.width;
     if (o.height) s.height = *o.height;
     if (o.seed) s.seed = *o.seed;
+    // The CLI checked membership already, so parsing cannot fail here.
+    if (o.triangle_test) s.accuracy.triangles = *parse_triangle_test(*o.triangle_test);
+    if (o.sphere_test) s.accuracy.spheres = *parse_sphere_test(*o.sphere_test);
+    if (o.fresnel) s.accuracy.fresnel = *parse_fresnel_model(*o.fresnel);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@ struct RenderCommandOptions {
     // Overrides of the scene's render settings; unset means "as the scene says".
     std::optional<int> spp, shadow_rays, width, height;
     std::optional<uint64_t> seed;
+    std::optional<std::string> triangle_test, sphere_test, fresnel;
     RenderOptions render;
     std::string integrator_name = "wavefront";
     std::string isa_name = "auto";

@@ -58,9 +58,9 @@ struct BsdfSample {
 };
 
 // Samples the next direction. n_geom is the geometric normal (outward for spheres, winding for
-// triangles); d the incoming ray direction. u_choice only matters for glass.
+// triangles); d the incoming ray direction. u_choice and the Fresnel model only matter for glass.
 inline BsdfSample sample_bsdf(const Material& m, const glm::vec3& n_geom, const glm::vec3& d, float u0, float u1,
-                              float u_choice) {
+                              float u_choice, FresnelModel fresnel = FresnelModel::schlick) {
     BsdfSample s;
     const bool front = glm::dot(d, n_geom) < 0.0f;
     const glm::vec3 n = front ? n_geom : -n_geom;  // facing the incoming ray
@@ -87,6 +87,8 @@ inline BsdfSample sample_bsdf(const Material& m, const glm::vec3& n_geom, const 
             return s;
         case MaterialType::glass: {
             // Inside/outside is decided by the geometric normal: spheres' normals point outward.
+            // Radiance's eta^2 scaling on refraction is left out: with the camera and every
+            // light outside the glass, each path that enters also leaves and the factors cancel.
             const float eta = front ? 1.0f / m.ior : m.ior;
             const float cos_i = -glm::dot(d, n);
             const auto refracted = refract(d, n, eta);
@@ -94,8 +96,11 @@ inline BsdfSample sample_bsdf(const Material& m, const glm::vec3& n_geom, const 
             s.weight = glm::vec3(1.0f);
             if (refracted) {
                 const float cos_outside = front ? cos_i : refracted->cos_transmitted;
+                const float reflectance = fresnel == FresnelModel::exact
+                                              ? fresnel_dielectric(cos_i, refracted->cos_transmitted, eta)
+                                              : schlick_reflectance(cos_outside, m.ior);
                 // Choosing reflection with probability R makes the weight R / R = 1 either way.
-                if (u_choice >= schlick_reflectance(cos_outside, m.ior)) {
+                if (u_choice >= reflectance) {
                     s.direction = refracted->direction;
                     return s;
                 }

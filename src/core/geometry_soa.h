@@ -12,9 +12,13 @@
 namespace wt {
 
 // Triangles stored for Moller-Trumbore: a vertex and the two edges leaving it, which is what
-// the test consumes, plus the unit geometric normal cross(e1, e2) for shading.
+// the test consumes, plus the unit geometric normal cross(e1, e2) for shading. The other two
+// vertices are kept as given for the watertight test: rebuilt as v0 + e1 they would round
+// differently in neighbouring triangles, and the shared edge would no longer be shared.
 struct TriangleSoA {
     AlignedVector<float> v0x, v0y, v0z;
+    AlignedVector<float> v1x, v1y, v1z;
+    AlignedVector<float> v2x, v2y, v2z;
     AlignedVector<float> e1x, e1y, e1z;
     AlignedVector<float> e2x, e2y, e2z;
     AlignedVector<float> nx, ny, nz;
@@ -23,6 +27,8 @@ struct TriangleSoA {
     std::size_t size() const { return material.size(); }
     void push_back(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id);
     glm::vec3 vertex0(std::size_t i) const { return {v0x[i], v0y[i], v0z[i]}; }
+    glm::vec3 vertex1(std::size_t i) const { return {v1x[i], v1y[i], v1z[i]}; }
+    glm::vec3 vertex2(std::size_t i) const { return {v2x[i], v2y[i], v2z[i]}; }
     glm::vec3 edge1(std::size_t i) const { return {e1x[i], e1y[i], e1z[i]}; }
     glm::vec3 edge2(std::size_t i) const { return {e2x[i], e2y[i], e2z[i]}; }
     glm::vec3 normal(std::size_t i) const { return {nx[i], ny[i], nz[i]}; }

@@ -90,7 +90,8 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
                                                      uint32_t bounce) {
     if (int(bounce) + 1 >= scene.settings.max_bounces) return std::nullopt;
     const BsdfSample s = sample_bsdf(m, surface.normal, d, random_float(key, bounce, dim::bsdf_u),
-                                     random_float(key, bounce, dim::bsdf_v), random_float(key, bounce, dim::bsdf_choice));
+                                     random_float(key, bounce, dim::bsdf_v), random_float(key, bounce, dim::bsdf_choice),
+                                     scene.settings.accuracy.fresnel);
     if (!s.valid) return std::nullopt;
     PathContinuation next;
     next.throughput = throughput * s.weight;

@@ -9,6 +9,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/accuracy.h"
+
 namespace wt {
 
 enum class MaterialType : uint8_t {
@@ -62,6 +64,7 @@ struct RenderSettings {
     uint64_t seed = 0;       // every random number is keyed by (seed, pixel, sample, bounce, dim)
     int max_bounces = 64;    // hard cap; Russian roulette ends almost every path long before
     int rr_start_bounce = 3; // first bounce at which Russian roulette may end a path
+    AccuracySettings accuracy;
 };
 
 struct SceneDescription {

@@ -357,7 +357,8 @@ CameraDescription read_camera(const Reader& in, const Json& j, const std::string
 
 RenderSettings read_render(const Reader& in, const Json& j, const std::string& path) {
     in.expect_object(j, path);
-    in.check_keys(j, path, {"width", "height", "spp", "shadow_rays", "seed", "max_bounces", "rr_start_bounce"});
+    in.check_keys(j, path, {"width", "height", "spp", "shadow_rays", "seed", "max_bounces", "rr_start_bounce",
+                            "triangle_test", "sphere_test", "fresnel"});
     RenderSettings s;
     const auto read_int = [&](const char* key, int& field, uint64_t lo, uint64_t hi) {
         if (const Json* v = in.optional(j, key)) field = int(in.integer(*v, member_path(path, key), lo, hi));
@@ -369,6 +370,17 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     read_int("max_bounces", s.max_bounces, 1, 1024);
     read_int("rr_start_bounce", s.rr_start_bounce, 0, INT32_MAX);
     if (const Json* seed = in.optional(j, "seed")) s.seed = in.integer(*seed, member_path(path, "seed"), 0, UINT64_MAX);
+    const auto read_choice = [&](const char* key, auto& field, auto parse, const char* allowed) {
+        const Json* v = in.optional(j, key);
+        if (!v) return;
+        const std::string key_path = member_path(path, key);
+        const auto parsed = parse(in.text(*v, key_path));
+        if (!parsed) in.fail(key_path, std::string("must be one of ") + allowed + ", got " + describe(*v));
+        field = *parsed;
+    };
+    read_choice("triangle_test", s.accuracy.triangles, parse_triangle_test, "\"moller_trumbore\", \"watertight\"");
+    read_choice("sphere_test", s.accuracy.spheres, parse_sphere_test, "\"quadratic\", \"cancellation_free\"");
+    read_choice("fresnel", s.accuracy.fresnel, parse_fresnel_model, "\"schlick\", \"exact\"");
     return s;
 }
 

@@ -3,6 +3,8 @@
 
 namespace wt {
 
-const IntersectKernels kIntersectAvx512 = packet::make_intersect_kernels<16>(Isa::avx512);
+constexpr packet::KernelVariants<16> kVariantsAvx512 = packet::make_intersect_kernels<16>(Isa::avx512);
+const IntersectKernels kIntersectAvx512[kKernelVariantCount] = {kVariantsAvx512.variants[0], kVariantsAvx512.variants[1],
+                                                               kVariantsAvx512.variants[2], kVariantsAvx512.variants[3]};
 
 }  // namespace wt

@@ -41,15 +41,22 @@ Isa best_supported_isa() {
     return Isa::scalar;
 }
 
-const IntersectKernels& intersect_kernels(Isa isa) {
+namespace {
+int kernel_variant(const AccuracySettings& a) {
+    return 2 * (a.triangles == TriangleTest::watertight) + (a.spheres == SphereTest::cancellation_free);
+}
+}  // namespace
+
+const IntersectKernels& intersect_kernels(Isa isa, const AccuracySettings& accuracy) {
     if (!cpu_supports(isa)) throw std::runtime_error(std::string("this CPU does not support the ") + isa_name(isa) + " kernels");
+    const int variant = kernel_variant(accuracy);
     switch (isa) {
-        case Isa::sse4: return kIntersectSse4;
-        case Isa::avx2: return kIntersectAvx2;
-        case Isa::avx512: return kIntersectAvx512;
+        case Isa::sse4: return kIntersectSse4[variant];
+        case Isa::avx2: return kIntersectAvx2[variant];
+        case Isa::avx512: return kIntersectAvx512[variant];
         case Isa::scalar: break;
     }
-    return kIntersectScalar;
+    return kIntersectScalar[variant];
 }
 
 SceneView scene_view(const Scene& scene) {
@@ -57,7 +64,8 @@ SceneView scene_view(const Scene& scene) {
     const SphereSoA& s = scene.spheres;
     SceneView v;
     v.triangles = {t.v0x.data(), t.v0y.data(), t.v0z.data(), t.e1x.data(), t.e1y.data(), t.e1z.data(),
-                   t.e2x.data(), t.e2y.data(), t.e2z.data(), uint32_t(t.size())};
+                   t.e2x.data(), t.e2y.data(), t.e2z.data(), t.v1x.data(), t.v1y.data(), t.v1z.data(),
+                   t.v2x.data(), t.v2y.data(), t.v2z.data(), uint32_t(t.size())};
     v.spheres = {s.cx.data(), s.cy.data(), s.cz.data(), s.radius.data(), uint32_t(s.size()), uint32_t(t.size())};
     return v;
 }

@@ -19,7 +19,7 @@ std::optional<Isa> parse_isa(const std::string& name);
 bool cpu_supports(Isa isa);
 Isa best_supported_isa();
 // Throws std::runtime_error naming the ISA if this CPU cannot run it.
-const IntersectKernels& intersect_kernels(Isa isa);
+const IntersectKernels& intersect_kernels(Isa isa, const AccuracySettings& accuracy = {});
 
 SceneView scene_view(const Scene& scene);
 RayView ray_view(const RayQueue& rays);

@@ -25,10 +25,14 @@ struct IntersectKernels {
     void (*any_primpacket)(const SceneView&, const RayView&, uint8_t* occluded);
 };
 
+// Each ISA has one kernel set per accuracy combination: (triangle test, sphere test), indexed
+// 2 * triangle + sphere (see kernel_variant() in intersect_dispatch.cpp).
+constexpr int kKernelVariantCount = 4;
+
 // Defined in intersect_<isa>.cpp, each compiled with its own target flags.
-extern const IntersectKernels kIntersectScalar;
-extern const IntersectKernels kIntersectSse4;
-extern const IntersectKernels kIntersectAvx2;
-extern const IntersectKernels kIntersectAvx512;
+extern const IntersectKernels kIntersectScalar[kKernelVariantCount];
+extern const IntersectKernels kIntersectSse4[kKernelVariantCount];
+extern const IntersectKernels kIntersectAvx2[kKernelVariantCount];
+extern const IntersectKernels kIntersectAvx512[kKernelVariantCount];
 
 }  // namespace wt

@@ -3,6 +3,8 @@
 
 namespace wt {
 
-const IntersectKernels kIntersectScalar = packet::make_intersect_kernels<1>(Isa::scalar);
+constexpr packet::KernelVariants<1> kVariantsScalar = packet::make_intersect_kernels<1>(Isa::scalar);
+const IntersectKernels kIntersectScalar[kKernelVariantCount] = {kVariantsScalar.variants[0], kVariantsScalar.variants[1],
+                                                               kVariantsScalar.variants[2], kVariantsScalar.variants[3]};
 
 }  // namespace wt

@@ -30,7 +30,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, Film& film
     std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces(static_cast<std::size_t>(threads));
 
     const Isa isa = options.isa.value_or(best_supported_isa());
-    const IntersectContext context{scene_view(scene), &intersect_kernels(isa)};
+    const IntersectContext context{scene_view(scene), &intersect_kernels(isa, scene.settings.accuracy)};
 
     ThreadPool pool(threads);
     const auto start = std::chrono::steady_clock::now();
