@@ -22,30 +22,9 @@ TEST(WavefrontVsReference, AgreeWithinStatisticalToleranceOnHexroom) {
     EXPECT_EQ(wave.result.counts.nonfinite_samples, 0u);
     EXPECT_EQ(ref.result.counts.nonfinite_samples, 0u);
 
-    const int pixels = 24 * 24;
-    const double per_test_alpha = 1e-3;
-    const double z = test::normal_two_sided_quantile(per_test_alpha);
-    // Caustic paths through the glass make some pixels' distributions heavy-tailed; the
-    // binomial allowance absorbs the occasional underestimated variance.
-    const int allowed = test::binomial_upper_bound(3 * pixels, per_test_alpha, 1e-6);
-    int failures = 0;
-    glm::dvec3 diff_sum(0.0), var_sum(0.0);
-    for (uint32_t p = 0; p < uint32_t(pixels); ++p) {
-        const glm::dvec3 d = wave.film.pixel_mean(p) - ref.film.pixel_mean(p);
-        const glm::dvec3 v = wave.film.pixel_sample_variance(p) / double(wave.film.pixel_count(p)) +
-                             ref.film.pixel_sample_variance(p) / double(ref.film.pixel_count(p));
-        for (int c = 0; c < 3; ++c) {
-            if (std::fabs(d[c]) > z * std::sqrt(v[c]) + 1e-9) {
-                ++failures;
-                std::cerr << "pixel " << p << " channel " << c << " differs by " << d[c] << " (sd " << std::sqrt(v[c])
-                          << "); replay: " << test::replay_command("scenes/hexroom.json", wave_desc, p, 0) << "\n";
-            }
-        }
-        diff_sum += d;
-        var_sum += v;
-    }
-    EXPECT_LE(failures, allowed);
-    for (int c = 0; c < 3; ++c) EXPECT_LE(std::fabs(diff_sum[c]), 4.5 * std::sqrt(var_sum[c])) << "channel " << c;
+    test::expect_films_agree(wave.film, ref.film, [&](uint32_t pixel) {
+        return test::replay_command("scenes/hexroom.json", wave_desc, pixel, 0);
+    });
 }
 
 // Both integrators call the same vertex code in the same order, and every ISA's kernels do

@@ -4,9 +4,16 @@
 #include <optional>
 #include <string>
 
+#include <cmath>
+#include <functional>
+#include <iostream>
+
+#include <gtest/gtest.h>
+
 #include "core/film.h"
 #include "core/scene.h"
 #include "kernels/renderer.h"
+#include "statistics.h"
 
 namespace wt::test {
 
@@ -44,6 +51,35 @@ inline std::string replay_command(const std::string& scene, const SceneDescripti
            std::to_string(d.settings.shadow_rays) + " --seed " + std::to_string(d.settings.seed) + " --debug-sample " +
            std::to_string(pixel % uint32_t(d.settings.width)) + "," + std::to_string(pixel / uint32_t(d.settings.width)) +
            "," + std::to_string(sample);
+}
+
+// Two independent renders of the same scene: a two-sample z-test per pixel and channel, with a
+// binomial allowance for chance failures (caustic paths make some pixels heavy-tailed, so a
+// pixel's own variance is occasionally underestimated), then the same test on the image sums.
+// `replay` names the command that reproduces a failing pixel.
+inline void expect_films_agree(const Film& a, const Film& b, const std::function<std::string(uint32_t)>& replay) {
+    const int pixels = a.width() * a.height();
+    const double per_test_alpha = 1e-3;
+    const double z = normal_two_sided_quantile(per_test_alpha);
+    const int allowed = binomial_upper_bound(3 * pixels, per_test_alpha, 1e-6);
+    int failures = 0;
+    glm::dvec3 diff_sum(0.0), var_sum(0.0);
+    for (uint32_t p = 0; p < uint32_t(pixels); ++p) {
+        const glm::dvec3 d = a.pixel_mean(p) - b.pixel_mean(p);
+        const glm::dvec3 v = a.pixel_sample_variance(p) / double(a.pixel_count(p)) +
+                             b.pixel_sample_variance(p) / double(b.pixel_count(p));
+        for (int c = 0; c < 3; ++c) {
+            if (std::fabs(d[c]) > z * std::sqrt(v[c]) + 1e-9) {
+                ++failures;
+                std::cerr << "pixel " << p << " channel " << c << " differs by " << d[c] << " (sd " << std::sqrt(v[c])
+                          << "); replay: " << replay(p) << "\n";
+            }
+        }
+        diff_sum += d;
+        var_sum += v;
+    }
+    EXPECT_LE(failures, allowed);
+    for (int c = 0; c < 3; ++c) EXPECT_LE(std::fabs(diff_sum[c]), 4.5 * std::sqrt(var_sum[c])) << "channel " << c;
 }
 
 }  // namespace wt::test

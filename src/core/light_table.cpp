@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/ray_offset.h"
 #include "core/sampling.h"
 
 namespace wt {
@@ -33,6 +34,7 @@ LightSample LightTable::sample(const TriangleSoA& triangles, float u_choice, flo
     const glm::vec2 b = sample_uniform_triangle(u0, u1);
     LightSample s;
     s.position = triangles.vertex0(tri) + b.x * triangles.edge1(tri) + b.y * triangles.edge2(tri);
+    s.error = triangle_point_error(triangles.vertex0(tri), triangles.edge1(tri), triangles.edge2(tri), b.x, b.y);
     s.normal = triangles.normal(tri);
     s.radiance = radiance_[index];
     s.pdf_area = 1.0f / total_area_;

@@ -15,6 +15,7 @@ namespace wt {
 
 struct LightSample {
     glm::vec3 position;
+    glm::vec3 error;     // bound on the rounding error of position
     glm::vec3 normal;    // the emitting (front) side
     glm::vec3 radiance;  // emitted towards the front side
     float pdf_area;

@@ -66,10 +66,10 @@ inline std::optional<ShadowRay> sample_light(const Scene& scene, const Material&
     const glm::vec3 f = eval_diffuse_bsdf(m, n, -d, wi);
     const float geometry = cos_x * cos_y / (dist2 * light.pdf_area * float(count));
     ShadowRay s;
-    s.ray.origin = offset_ray_origin(surface.position, n);
+    s.ray.origin = offset_ray_origin(surface.position, surface.error, n);
     // Both ends are moved off their surfaces, so neither the shading point's nor the light's
     // own triangle can block the ray.
-    const glm::vec3 target = offset_ray_origin(light.position, light.normal);
+    const glm::vec3 target = offset_ray_origin(light.position, light.error, light.normal);
     const glm::vec3 span = target - s.ray.origin;
     s.tmax = glm::length(span);
     s.ray.direction = span / s.tmax;
@@ -107,7 +107,7 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
         next.throughput /= q;
     }
     const glm::vec3 side = glm::dot(s.direction, surface.normal) > 0.0f ? surface.normal : -surface.normal;
-    next.ray.origin = offset_ray_origin(surface.position, side);
+    next.ray.origin = offset_ray_origin(surface.position, surface.error, side);
     next.ray.direction = s.direction;
     return next;
 }

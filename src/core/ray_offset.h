@@ -1,39 +1,56 @@
 #pragma once
 // Where a spawned ray starts. A fixed epsilon is wrong at every scale but one: too small for
-// a room a kilometre away from the origin (self-intersection acne), too large for a millimetre
-// object (light leaks). Wachter & Binder, "A Fast and Robust Method for Avoiding
-// Self-Intersection" (Ray Tracing Gems, ch. 6): move the point a fixed number of ulps along
-// the normal, which scales with the point's magnitude, and a small absolute amount near the
-// origin where ulps are tiny.
+// a room a kilometre from the origin (self-intersection acne), too large for a millimetre
+// object (light leaks), so the offset here is derived from a bound on the rounding error of
+// the hit point itself, as in pbrt-v4 (Pharr, Jakob & Humphreys, 4th ed., sec. 6.8): the
+// point moves along the normal just past the slab of points it may really be, and each
+// component is then rounded one more ulp away from the surface.
+//
+// Wachter & Binder's fixed 256-ulp offset (Ray Tracing Gems ch. 6) was tried first: with the
+// hexroom moved 1e5 from the origin it is 2 m, and rays refracted into the glass spheres
+// started on their far side (tests/scale_test.cpp).
 
 #include <cmath>
-#include <cstdint>
-#include <cstring>
+#include <limits>
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 namespace wt {
 
-namespace detail {
-inline float offset_component(float p, float n) {
-    constexpr float kNearOrigin = 1.0f / 32.0f;
-    constexpr float kFloatScale = 1.0f / 65536.0f;
-    constexpr float kIntScale = 256.0f;
-    if (std::fabs(p) < kNearOrigin) return p + kFloatScale * n;
-    int32_t bits;
-    std::memcpy(&bits, &p, sizeof bits);
-    const int32_t ulps = int32_t(kIntScale * n);
-    bits += (p < 0.0f) ? -ulps : ulps;
-    float out;
-    std::memcpy(&out, &bits, sizeof out);
+// Higham's gamma_n = n u / (1 - n u), u = 2^-24: the relative error bound of n roundings.
+constexpr float rounding_gamma(int n) {
+    constexpr float u = 0.5f * std::numeric_limits<float>::epsilon();
+    return float(n) * u / (1.0f - float(n) * u);
+}
+
+// Error bound of v0 + u e1 + v e2 computed in float with e1 = v1 - v0, e2 = v2 - v0 rounded.
+inline glm::vec3 triangle_point_error(const glm::vec3& v0, const glm::vec3& e1, const glm::vec3& e2, float u, float v) {
+    return rounding_gamma(7) * (glm::abs(v0) + glm::abs(u * e1) + glm::abs(v * e2));
+}
+
+// Error bound of c + r * normalize(...), the hit point reprojected onto its sphere.
+inline glm::vec3 sphere_point_error(const glm::vec3& center, float radius, const glm::vec3& unit_normal) {
+    return rounding_gamma(5) * (glm::abs(center) + glm::abs(radius * unit_normal));
+}
+
+// p: the computed point, error: a per-component bound on |p - exact point|, n: unit normal
+// pointing to the side the new ray leaves towards.
+inline glm::vec3 offset_ray_origin(const glm::vec3& p, const glm::vec3& error, const glm::vec3& n) {
+    const float distance = glm::dot(glm::abs(n), error);
+    const glm::vec3 offset = distance * n;
+    glm::vec3 out = p + offset;
+    for (int i = 0; i < 3; ++i) {
+        if (offset[i] > 0.0f) out[i] = std::nextafter(out[i], std::numeric_limits<float>::infinity());
+        else if (offset[i] < 0.0f) out[i] = std::nextafter(out[i], -std::numeric_limits<float>::infinity());
+    }
     return out;
 }
-}  // namespace detail
 
-// n: unit normal pointing to the side the new ray leaves towards.
+// For a point computed in a few operations from values no larger than itself (error ~ |p|).
 inline glm::vec3 offset_ray_origin(const glm::vec3& p, const glm::vec3& n) {
-    return {detail::offset_component(p.x, n.x), detail::offset_component(p.y, n.y),
-            detail::offset_component(p.z, n.z)};
+    return offset_ray_origin(p, rounding_gamma(7) * glm::abs(p), n);
 }
 
 }  // namespace wt

@@ -12,6 +12,7 @@
 #include "core/geometry_soa.h"
 #include "core/light_table.h"
 #include "core/ray.h"
+#include "core/ray_offset.h"
 #include "core/scene_description.h"
 
 namespace wt {
@@ -33,6 +34,7 @@ Scene build_scene(const SceneDescription& description);
 // What the shade stage needs to know about a hit.
 struct SurfacePoint {
     glm::vec3 position;
+    glm::vec3 error;   // bound on the rounding error of position, for offset_ray_origin()
     glm::vec3 normal;  // geometric; winding for triangles, outward for spheres
     uint32_t material;
 };
@@ -45,6 +47,7 @@ inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hi
         // From barycentrics rather than o + t*d: its error does not grow with the hit distance,
         // which is what the ulp-based ray offset assumes.
         s.position = t.vertex0(hit.prim) + hit.u * t.edge1(hit.prim) + hit.v * t.edge2(hit.prim);
+        s.error = triangle_point_error(t.vertex0(hit.prim), t.edge1(hit.prim), t.edge2(hit.prim), hit.u, hit.v);
         s.normal = t.normal(hit.prim);
         s.material = t.material[hit.prim];
     } else {
@@ -54,6 +57,7 @@ inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hi
         s.normal = glm::normalize(ray.origin + hit.t * ray.direction - c);
         // Projected back onto the sphere, for the same reason.
         s.position = c + r * s.normal;
+        s.error = sphere_point_error(c, r, s.normal);
         s.material = scene.spheres.material[i];
     }
     return s;
