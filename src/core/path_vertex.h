@@ -43,17 +43,28 @@ struct ShadowRay {
     glm::vec3 contribution;  // added to the path's radiance if nothing blocks the ray
 };
 
+// What every light sample at one diffuse vertex shares, computed once per vertex.
+struct LightSamplingPoint {
+    glm::vec3 normal;      // facing the incoming ray
+    glm::vec3 ray_origin;  // the shading point moved off its surface on that side
+};
+
+inline LightSamplingPoint light_sampling_point(const SurfacePoint& surface, const glm::vec3& d) {
+    const glm::vec3 n = glm::dot(d, surface.normal) < 0.0f ? surface.normal : -surface.normal;
+    return {n, offset_ray_origin(surface.position, surface.error, n)};
+}
+
 // Light sample `index` of `count` at a diffuse vertex (next-event estimation). The estimate is
 // f * Le * cos_x * cos_y / (dist^2 * pdf_area), averaged over the `count` shadow rays. Empty when
 // the sample cannot contribute (light seen from behind, point below the surface), so no ray is
 // traced for it.
 inline std::optional<ShadowRay> sample_light(const Scene& scene, const Material& m, const SurfacePoint& surface,
-                                             const glm::vec3& d, const glm::vec3& throughput, uint64_t key,
+                                             const LightSamplingPoint& at, const glm::vec3& d, const glm::vec3& throughput, uint64_t key,
                                              uint32_t bounce, uint32_t index, uint32_t count) {
     const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
     const LightSample light = scene.lights.sample(scene.triangles, random_float(key, bounce, base),
                                                   random_float(key, bounce, base + 1), random_float(key, bounce, base + 2));
-    const glm::vec3 n = glm::dot(d, surface.normal) < 0.0f ? surface.normal : -surface.normal;
+    const glm::vec3& n = at.normal;
     const glm::vec3 to_light = light.position - surface.position;
     const float dist2 = glm::dot(to_light, to_light);
     if (!(dist2 > 0.0f)) return std::nullopt;
@@ -66,7 +77,7 @@ inline std::optional<ShadowRay> sample_light(const Scene& scene, const Material&
     const glm::vec3 f = eval_diffuse_bsdf(m, n, -d, wi);
     const float geometry = cos_x * cos_y / (dist2 * light.pdf_area * float(count));
     ShadowRay s;
-    s.ray.origin = offset_ray_origin(surface.position, surface.error, n);
+    s.ray.origin = at.ray_origin;
     // Both ends are moved off their surfaces, so neither the shading point's nor the light's
     // own triangle can block the ray.
     const glm::vec3 target = offset_ray_origin(light.position, light.error, light.normal);

@@ -11,6 +11,8 @@
 // started on their far side (tests/scale_test.cpp).
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include <glm/common.hpp>
@@ -35,6 +37,19 @@ inline glm::vec3 sphere_point_error(const glm::vec3& center, float radius, const
     return rounding_gamma(5) * (glm::abs(center) + glm::abs(radius * unit_normal));
 }
 
+// The next float towards +inf / -inf, inline: std::nextafter is a libm call, and this runs
+// six times per shadow ray.
+inline float next_float_up(float v) {
+    if (std::isinf(v) && v > 0.0f) return v;
+    if (v == -0.0f) v = 0.0f;
+    uint32_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    bits = v >= 0.0f ? bits + 1 : bits - 1;
+    std::memcpy(&v, &bits, sizeof v);
+    return v;
+}
+inline float next_float_down(float v) { return -next_float_up(-v); }
+
 // p: the computed point, error: a per-component bound on |p - exact point|, n: unit normal
 // pointing to the side the new ray leaves towards.
 inline glm::vec3 offset_ray_origin(const glm::vec3& p, const glm::vec3& error, const glm::vec3& n) {
@@ -42,8 +57,8 @@ inline glm::vec3 offset_ray_origin(const glm::vec3& p, const glm::vec3& error, c
     const glm::vec3 offset = distance * n;
     glm::vec3 out = p + offset;
     for (int i = 0; i < 3; ++i) {
-        if (offset[i] > 0.0f) out[i] = std::nextafter(out[i], std::numeric_limits<float>::infinity());
-        else if (offset[i] < 0.0f) out[i] = std::nextafter(out[i], -std::numeric_limits<float>::infinity());
+        if (offset[i] > 0.0f) out[i] = next_float_up(out[i]);
+        else if (offset[i] < 0.0f) out[i] = next_float_down(out[i]);
     }
     return out;
 }

@@ -261,7 +261,7 @@ void closest_raypacket(const SceneView& scene, const RayView& rays, const HitVie
         vint<N> best_prim(-1);
         for (uint32_t i = 0; i < tri.count; ++i) {
             vfloat<N> t, u, v;
-            const vbool<N> hit = r.active & intersect_triangles(tr, broadcast_triangle<T, N>(tri, i), r.active, best_t, t, u, v);
+            const vbool<N> hit = intersect_triangles(tr, broadcast_triangle<T, N>(tri, i), r.active, best_t, t, u, v);
             if (simd::none(hit)) continue;
             best_t = simd::select(hit, t, best_t);
             best_u = simd::select(hit, u, best_u);
@@ -270,7 +270,7 @@ void closest_raypacket(const SceneView& scene, const RayView& rays, const HitVie
         }
         for (uint32_t i = 0; i < sph.count; ++i) {
             vfloat<N> t;
-            const vbool<N> hit = r.active & intersect_spheres<S>(r.o, r.d, broadcast<N>(sph.cx, sph.cy, sph.cz, i),
+            const vbool<N> hit = intersect_spheres<S>(r.o, r.d, broadcast<N>(sph.cx, sph.cy, sph.cz, i),
                                                                  vfloat<N>(sph.radius[i]), best_t, t);
             if (simd::none(hit)) continue;
             best_t = simd::select(hit, t, best_t);
