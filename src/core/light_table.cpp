@@ -1,7 +1,5 @@
 #include "core/light_table.h"
 
-#include <algorithm>
-
 #include <glm/geometric.hpp>
 
 #include "core/ray_offset.h"
@@ -18,25 +16,25 @@ LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>
         const double area = 0.5 * double(glm::length(glm::cross(triangles.edge1(i), triangles.edge2(i))));
         if (area <= 0.0) continue;  // the loader rejects degenerate lights; built-in scenes may not
         running_area += area;
-        triangle_.push_back(i);
         cumulative.push_back(running_area);
-        radiance_.push_back(m.emission);
+        emitters_.push_back({triangles.vertex0(i), triangles.edge1(i), triangles.edge2(i), triangles.normal(i), m.emission, 0.0f});
     }
     total_area_ = float(running_area);
-    for (double c : cumulative) cdf_.push_back(float(c / running_area));
-    if (!cdf_.empty()) cdf_.back() = 1.0f;  // so u_choice < 1 always finds an entry
+    for (std::size_t k = 0; k < emitters_.size(); ++k) emitters_[k].cdf = float(cumulative[k] / running_area);
+    if (!emitters_.empty()) emitters_.back().cdf = 1.0f;  // so u_choice < 1 always finds an entry
 }
 
-LightSample LightTable::sample(const TriangleSoA& triangles, float u_choice, float u0, float u1) const {
-    const std::size_t k = std::size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u_choice) - cdf_.begin());
-    const std::size_t index = std::min(k, cdf_.size() - 1);
-    const uint32_t tri = triangle_[index];
+LightSample LightTable::sample(const TriangleSoA&, float u_choice, float u0, float u1) const {
+    // A linear scan: scenes have a handful of emitters, and it is branch-predictable.
+    std::size_t k = 0;
+    while (k + 1 < emitters_.size() && !(u_choice < emitters_[k].cdf)) ++k;
+    const Emitter& e = emitters_[k];
     const glm::vec2 b = sample_uniform_triangle(u0, u1);
     LightSample s;
-    s.position = triangles.vertex0(tri) + b.x * triangles.edge1(tri) + b.y * triangles.edge2(tri);
-    s.error = triangle_point_error(triangles.vertex0(tri), triangles.edge1(tri), triangles.edge2(tri), b.x, b.y);
-    s.normal = triangles.normal(tri);
-    s.radiance = radiance_[index];
+    s.position = e.v0 + b.x * e.e1 + b.y * e.e2;
+    s.error = triangle_point_error(e.v0, e.e1, e.e2, b.x, b.y);
+    s.normal = e.normal;
+    s.radiance = e.radiance;
     s.pdf_area = 1.0f / total_area_;
     return s;
 }

@@ -26,17 +26,21 @@ public:
     LightTable() = default;
     LightTable(const TriangleSoA& triangles, const std::vector<Material>& materials);
 
-    bool empty() const { return triangle_.empty(); }
-    std::size_t size() const { return triangle_.size(); }
+    bool empty() const { return emitters_.empty(); }
+    std::size_t size() const { return emitters_.size(); }
     float total_area() const { return total_area_; }
 
-    // u_choice picks the triangle, (u0, u1) the point on it.
+    // u_choice picks the triangle, (u0, u1) the point on it. (The triangles argument is the
+    // scene's; the table keeps its own copy of what sampling reads, in one cache line per light.)
     LightSample sample(const TriangleSoA& triangles, float u_choice, float u0, float u1) const;
 
 private:
-    std::vector<uint32_t> triangle_;   // triangle ids of the emitters
-    std::vector<float> cdf_;           // cumulative area, normalised, cdf_.back() == 1
-    std::vector<glm::vec3> radiance_;
+    // Everything one light sample reads, together: sampling touches one record, not six arrays.
+    struct Emitter {
+        glm::vec3 v0, e1, e2, normal, radiance;
+        float cdf;  // cumulative area fraction up to and including this triangle; the last is 1
+    };
+    std::vector<Emitter> emitters_;
     float total_area_ = 0.0f;
 };
 
