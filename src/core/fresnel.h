@@ -12,7 +12,12 @@ namespace wt {
 // Schlick 1994. cos_outside is the cosine of the angle on the optically thinner side: the
 // incident angle when entering the glass, the transmitted angle when leaving it. Using the
 // inside angle on exit would get total internal reflection's onset wrong.
+//
+// An index-matched interface (ior 1) reflects nothing at any angle; Schlick's (1 - cos)^5 term
+// assumes a contrast and would still reflect 38% at 80 degrees, drawing a dark ring around a
+// sphere that should be invisible (tests/extremes_test.cpp), so that case is exact here.
 inline float schlick_reflectance(float cos_outside, float ior) {
+    if (ior == 1.0f) return 0.0f;
     float r0 = (1.0f - ior) / (1.0f + ior);
     r0 *= r0;
     const float m = 1.0f - cos_outside;

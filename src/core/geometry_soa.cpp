@@ -1,15 +1,26 @@
 #include "core/geometry_soa.h"
 
 #include <glm/geometric.hpp>
+#include <glm/ext/vector_double3.hpp>
 
 namespace wt {
 
-void TriangleSoA::push_back(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id) {
+bool is_sliver(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::dvec3 e1 = glm::dvec3(b) - glm::dvec3(a), e2 = glm::dvec3(c) - glm::dvec3(a);
+    constexpr double kResolvableSine = 32.0 * 0x1p-24;
+    return glm::length(glm::cross(e1, e2)) <= kResolvableSine * glm::length(e1) * glm::length(e2);
+}
+
+void TriangleSoA::push_back(const glm::vec3& a, const glm::vec3& given_b, const glm::vec3& given_c, uint32_t material_id) {
+    // Collapsed, a sliver has zero edges: det = 0 in Moller-Trumbore and every edge function is
+    // 0 in the watertight test, so no kernel can report a hit on it.
+    const bool sliver = is_sliver(a, given_b, given_c);
+    const glm::vec3 b = sliver ? a : given_b;
+    const glm::vec3 c = sliver ? a : given_c;
     const glm::vec3 e1 = b - a;
     const glm::vec3 e2 = c - a;
     const glm::vec3 cross = glm::cross(e1, e2);
     const float length = glm::length(cross);
-    // A degenerate triangle keeps a zero normal; Moller-Trumbore never reports a hit on it.
     const glm::vec3 n = length > 0.0f ? cross / length : glm::vec3(0.0f);
     v0x.push_back(a.x), v0y.push_back(a.y), v0z.push_back(a.z);
     v1x.push_back(b.x), v1y.push_back(b.y), v1z.push_back(b.z);

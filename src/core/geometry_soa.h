@@ -11,6 +11,13 @@
 
 namespace wt {
 
+// A triangle too thin for float: the sine of the angle between its edges is below what the
+// rounding of their cross product can resolve (32 units of 2^-24), so its normal is noise and
+// the intersection tests return garbage distances for it (a needle 1e-7 wide was "hit" 1.7 m
+// past where a ray crossed it). Such triangles are stored with zero edges and are never hit;
+// the light area they cover is below 2e-6 of their bounding rectangle.
+bool is_sliver(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+
 // Triangles stored for Moller-Trumbore: a vertex and the two edges leaving it, which is what
 // the test consumes, plus the unit geometric normal cross(e1, e2) for shading. The other two
 // vertices are kept as given for the watertight test: rebuilt as v0 + e1 they would round
@@ -25,6 +32,7 @@ struct TriangleSoA {
     AlignedVector<uint32_t> material;
 
     std::size_t size() const { return material.size(); }
+    // A sliver (see is_sliver) is stored collapsed onto its first vertex.
     void push_back(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id);
     glm::vec3 vertex0(std::size_t i) const { return {v0x[i], v0y[i], v0z[i]}; }
     glm::vec3 vertex1(std::size_t i) const { return {v1x[i], v1y[i], v1z[i]}; }

@@ -1,5 +1,7 @@
 #include "core/scene_loader.h"
 
+#include "core/geometry_soa.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -491,7 +493,8 @@ TriangleMesh read_quad(const Reader& in, const Json& j, const std::string& path)
     const glm::dvec3 v0(mesh.vertices[0]), v1(mesh.vertices[1]), v2(mesh.vertices[2]), v3(mesh.vertices[3]);
     for (std::size_t t = 0; t < 2; ++t) {
         const auto& tri = mesh.triangles[t];
-        if (triangle_size(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]).degenerate())
+        const glm::vec3 &qa = mesh.vertices[tri[0]], &qb = mesh.vertices[tri[1]], &qc = mesh.vertices[tri[2]];
+        if (triangle_size(qa, qb, qc).degenerate() || is_sliver(qa, qb, qc))
             in.fail(vpath, "degenerate quad: its triangle " + std::to_string(t) + " (v" + std::to_string(tri[0]) +
                                ", v" + std::to_string(tri[1]) + ", v" + std::to_string(tri[2]) + ") has zero area");
     }
@@ -551,7 +554,7 @@ void check_light_triangles(const Reader& in, const TriangleMesh& mesh, const std
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& tri = mesh.triangles[t];
         const glm::vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
-        if (triangle_size(a, b, c).degenerate())
+        if (triangle_size(a, b, c).degenerate() || is_sliver(a, b, c))
             in.fail(element_path(member_path(path, "triangles"), t),
                     "degenerate light: emissive triangle " + std::to_string(t) + " has zero area (vertices " +
                         format_vec3(a) + ", " + format_vec3(b) + ", " + format_vec3(c) + ")");

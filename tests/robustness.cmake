@@ -1,0 +1,28 @@
+# Numerics at the extremes and the statistical verification of the estimators. Included from
+# tests/CMakeLists.txt, after wavetrace_test() is defined.
+#
+#   extremes_test            deterministic checks at the edges of the number line and of the
+#                            settings: parallel and 1-ulp rays, degenerate triangles, signed
+#                            zeros, far/tiny/huge spheres, self-intersection of spawned rays,
+#                            index-matched glass, Oren-Nayar at grazing view, overflow to Inf,
+#                            1x1 images and idle threads. Every ISA's kernels, both layouts.
+#   statistical_test         chi-square goodness of fit of every sampler, Russian roulette
+#                            against none in the white furnace, and a per-pixel z-test of a
+#                            low-spp wavefront render against a high-spp reference. Sized for
+#                            CI (a few seconds on 2 cores).
+#   statistical_long_test    the same source with WT_LONG_TESTS=1: 10-50x the samples, a
+#                            larger image. Labelled `long`, so `make test` (ctest -LE long)
+#                            skips it; run it with `ctest -L long`.
+
+wavetrace_test(extremes_test extremes_test.cpp)
+wavetrace_test(statistical_test statistical_test.cpp)
+
+# Not through wavetrace_test(): gtest_discover_tests() registers the tests at build time, so
+# the label has to be given to it (set_tests_properties() at configure time sees no tests),
+# and the prefix keeps the names apart from the CI variant's.
+add_executable(statistical_long_test statistical_test.cpp)
+target_link_libraries(statistical_long_test PRIVATE wavetrace_kernels GTest::gtest_main)
+target_compile_definitions(statistical_long_test PRIVATE WT_SCENES_DIR="${PROJECT_SOURCE_DIR}/scenes" WT_LONG_TESTS=1)
+target_include_directories(statistical_long_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+gtest_discover_tests(statistical_long_test DISCOVERY_TIMEOUT 60 TEST_PREFIX "long."
+                     PROPERTIES LABELS long TIMEOUT 3600)
