@@ -1,12 +1,13 @@
 # The two commands a new user needs, plus the steps they are made of.
 #   make render   install what is missing, build Release, render the reference scene
-#   make test     install what is missing, build, run the whole test suite
+#   make test     install what is missing, build, run the whole test suite (with the
+#                 instruction-count performance gate; not the `long` statistical tests)
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 SCENE ?= scenes/hexroom.json
 RENDER_DIR ?= renders
 
-.PHONY: render test build deps configure clean
+.PHONY: render test test-long bench perf-gate perf-gate-update build deps configure clean
 
 render: build
 	mkdir -p $(RENDER_DIR)
@@ -14,6 +15,19 @@ render: build
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE long
+
+test-long: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -L long
+
+bench: build
+	$(BUILD_DIR)/bin/bench_intersect
+	$(BUILD_DIR)/bin/bench_render
+
+perf-gate: build
+	bench/perf_gate.sh $(BUILD_DIR)
+
+perf-gate-update: build
+	bench/perf_gate.sh $(BUILD_DIR) --update
 
 deps:
 	tools/install-deps.sh

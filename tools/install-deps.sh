@@ -12,6 +12,7 @@ packages=(
   libcli11-dev                  # command line
   libgtest-dev                  # tests
   libbenchmark-dev              # benchmarks
+  valgrind                      # callgrind, for the instruction-count performance gate
 )
 
 missing=()

@@ -1,0 +1,44 @@
+#pragma once
+// Embree 3 as a yardstick for our kernels: the same scene and the same rays through Intel's
+// BVH kernels, written to the same outputs so bench_intersect reports them the same way.
+// Built only when CMake finds Embree (WAVETRACE_HAVE_EMBREE); nothing else depends on it, and
+// this header does not include Embree's, so only embree_baseline.cpp needs them.
+
+#include <cstdint>
+#include <memory>
+
+#include "core/scene.h"
+#include "kernels/soa_views.h"
+
+namespace wt::bench {
+
+// Which Embree entry point traces the rays.
+enum class EmbreeApi {
+    single,    // rtcIntersect1 / rtcOccluded1, one ray at a time
+    packet8,   // rtcIntersect8 / rtcOccluded8, packets of 8 consecutive rays
+    packet16,  // rtcIntersect16 / rtcOccluded16, packets of 16
+};
+
+class EmbreeBaseline {
+public:
+    // Triangles become one RTC_GEOMETRY_TYPE_TRIANGLE geometry (vertices v0, v0 + e1, v0 + e2
+    // from the scene's SoA, so Embree sees the triangles our kernels see), spheres one
+    // RTC_GEOMETRY_TYPE_SPHERE_POINT geometry. The device runs on one thread.
+    explicit EmbreeBaseline(const Scene& scene);
+    ~EmbreeBaseline();
+    EmbreeBaseline(const EmbreeBaseline&) = delete;
+    EmbreeBaseline& operator=(const EmbreeBaseline&) = delete;
+
+    // The contracts of IntersectKernels: closest hit with prim in our primitive index space
+    // (kNoHit and t = +inf for a miss); occluded[i] = 1 if anything blocks ray i before its
+    // tmax. Rays run from t = 0. `coherent` tells Embree the rays are coherent (primary rays),
+    // which it may use to pick its packet traversal.
+    void closest(EmbreeApi api, const RayView& rays, const HitView& hits, bool coherent) const;
+    void any(EmbreeApi api, const RayView& rays, uint8_t* occluded, bool coherent) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace wt::bench

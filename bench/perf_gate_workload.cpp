@@ -1,0 +1,107 @@
+// A fixed, deterministic workload for the instruction-count performance gate (perf_gate.sh).
+// Run under callgrind with --collect-atstart=no: only the region between the two
+// CALLGRIND_TOGGLE_COLLECT marks is counted, so building the scene and the rays is not.
+//
+//   perf_gate_workload intersect ISA LAYOUT QUERY   ISA scalar|sse4|avx2, LAYOUT raypacket|primpacket,
+//                                                   QUERY closest|any: 20000 incoherent hexroom rays
+//   perf_gate_workload render ISA                   a 24x24, 2 spp hexroom render on one thread
+
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <valgrind/callgrind.h>
+
+#include "core/film.h"
+#include "core/scene.h"
+#include "core/scene_loader.h"
+#include "kernels/intersect_dispatch.h"
+#include "kernels/renderer.h"
+
+namespace {
+
+using namespace wt;
+
+struct Rays {
+    std::vector<float> ox, oy, oz, dx, dy, dz, tmax;
+    RayView view() const {
+        return {ox.data(), oy.data(), oz.data(), dx.data(), dy.data(), dz.data(), tmax.data(), uint32_t(ox.size())};
+    }
+};
+
+// Origins in a box inside the hexroom, uniform directions, lengths up to 15 m: the same kind
+// of rays as bench_intersect's incoherent workload, fewer of them, since callgrind is slow.
+Rays incoherent_rays(uint32_t count) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> x(0.5f, 9.5f), y(-4.5f, 4.5f), z(-4.5f, 4.5f), len(0.5f, 15.0f);
+    std::normal_distribution<float> n;
+    Rays r;
+    for (uint32_t i = 0; i < count; ++i) {
+        float d[3] = {n(rng), n(rng), n(rng)};
+        const float inv = 1.0f / std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        r.ox.push_back(x(rng)), r.oy.push_back(y(rng)), r.oz.push_back(z(rng));
+        r.dx.push_back(d[0] * inv), r.dy.push_back(d[1] * inv), r.dz.push_back(d[2] * inv);
+        r.tmax.push_back(len(rng));
+    }
+    return r;
+}
+
+int usage() {
+    std::fprintf(stderr, "usage: perf_gate_workload SCENE intersect ISA raypacket|primpacket closest|any\n"
+                         "       perf_gate_workload SCENE render ISA\n");
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 4) return usage();
+    const std::string scene_path = argv[1], what = argv[2];
+    const auto isa = parse_isa(argv[3]);
+    if (!isa || !cpu_supports(*isa)) {
+        std::fprintf(stderr, "perf_gate_workload: ISA '%s' unknown or not supported here\n", argv[3]);
+        return 2;
+    }
+    SceneDescription description = load_scene_file(scene_path);
+
+    if (what == "render" && argc == 4) {
+        description.settings.width = description.settings.height = 24;
+        description.settings.spp = 2;
+        const Scene scene = build_scene(description);
+        Film film(24, 24);
+        RenderOptions options;
+        options.threads = 1;
+        options.isa = *isa;
+        CALLGRIND_TOGGLE_COLLECT;
+        render(scene, options, film);
+        CALLGRIND_TOGGLE_COLLECT;
+        return 0;
+    }
+    if (what != "intersect" || argc != 6) return usage();
+    const std::string layout = argv[4], query = argv[5];
+    const Scene scene = build_scene(description);
+    const SceneView view = scene_view(scene);
+    const IntersectKernels& k = intersect_kernels(*isa);
+    const Rays rays = incoherent_rays(20000);
+    const std::size_t n = rays.ox.size();
+    std::vector<float> t(n), u(n), v(n);
+    std::vector<uint32_t> prim(n);
+    std::vector<uint8_t> occluded(n);
+    const HitView hits{t.data(), u.data(), v.data(), prim.data()};
+    const bool raypacket = layout == "raypacket";
+    if (!raypacket && layout != "primpacket") return usage();
+    if (query != "closest" && query != "any") return usage();
+
+    CALLGRIND_TOGGLE_COLLECT;
+    if (query == "closest") (raypacket ? k.closest_raypacket : k.closest_primpacket)(view, rays.view(), hits);
+    else (raypacket ? k.any_raypacket : k.any_primpacket)(view, rays.view(), occluded.data());
+    CALLGRIND_TOGGLE_COLLECT;
+
+    // A checksum, so the work cannot be optimised away and a broken kernel shows.
+    std::size_t hit_count = 0;
+    for (std::size_t i = 0; i < n; ++i) hit_count += query == "closest" ? prim[i] != kNoHit : occluded[i];
+    std::printf("hits %zu\n", hit_count);
+    return 0;
+}

@@ -1,0 +1,64 @@
+#pragma once
+// The ray sets bench_intersect traces through the hexroom. A benchmark is an experiment (the
+// query and the kernel, chosen in bench_intersect.cpp) x a primitive set (the scene) x a ray
+// distribution (here); the three are kept apart so each can change without touching the others.
+//
+// Every set is deterministic: random numbers come from the renderer's counter-based hash
+// (core/rng.h) with fixed seeds, so the rays are the same on every machine and every run, and
+// the checksums in bench/README.md can be compared.
+
+#include <cstddef>
+#include <cstdint>
+
+#include "core/aligned_vector.h"
+#include "core/ray.h"
+#include "core/scene.h"
+#include "kernels/soa_views.h"
+
+namespace wt::bench {
+
+enum class Workload { primary, incoherent, shadow };
+constexpr Workload kAllWorkloads[] = {Workload::primary, Workload::incoherent, Workload::shadow};
+const char* workload_name(Workload workload);
+
+// Rays in the SoA layout the kernels read.
+struct RaySet {
+    AlignedVector<float> ox, oy, oz, dx, dy, dz;
+    AlignedVector<float> tmax;  // empty: every ray is unbounded
+
+    std::size_t size() const { return ox.size(); }
+    Ray ray(std::size_t i) const { return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}; }
+    void push_back(const Ray& ray);
+    void push_back(const Ray& ray, float max_distance);
+    RayView view() const;
+};
+
+// --- Ray distributions, for any scene ---
+
+// One ray through the centre of every pixel of the scene's camera, row by row: the most
+// coherent rays a renderer traces.
+RaySet primary_rays(const Scene& scene);
+
+// Rays first_index ... first_index + count - 1 of an endless, seeded stream: origins uniform
+// in the hexroom's air (inside the hexagonal prism, outside every sphere; the small tetrahedron
+// is not excluded), directions uniform on the sphere, unbounded. Ray i does not depend on
+// first_index, so a longer set starts with the same rays as a shorter one.
+RaySet incoherent_rays(const Scene& scene, uint32_t first_index, uint32_t count, uint64_t seed);
+
+// `count` shadow rays exactly as the renderer builds them: the closest hits of the incoherent
+// stream (seed incoherent_seed) are the shading points; at each one that gathers direct light
+// (diffuse, not black: not the mirror, glass or the light itself) sample_light() picks a
+// uniform point on the lights and offsets both ends off their surfaces; samples it rejects
+// (light behind the surface or seen from its back) trace no ray, as in the renderer. Bounded by
+// the distance to the offset light point.
+RaySet shadow_rays(const Scene& scene, uint32_t count, uint64_t incoherent_seed, uint64_t light_seed);
+
+// --- The sets the benchmarks share ---
+
+// The hexroom at 800x800, built on first use.
+const Scene& benchmark_scene();
+// primary: 800x800 = 640,000 rays; incoherent and shadow: 1,000,000 rays each. Built on first
+// use (the shadow set takes a few seconds), then shared by every benchmark.
+const RaySet& workload_rays(Workload workload);
+
+}  // namespace wt::bench
