@@ -7,7 +7,8 @@
 // the same order, one IEEE division, and no fused multiply-add (the build passes
 // -ffp-contract=off and this file calls no madd). Every width on every ISA therefore returns
 // the same bits as the scalar code, so an image is identical whichever kernels rendered it.
-// That costs about 8% end to end against an FMA version (bench/README.md), and buys exact
+// That cost about 8% end to end against an FMA version (hexroom 200x200, 16 spp, one thread,
+// AVX-512: 0.83-0.84 s with FMA against 0.90-0.97 s without, three runs each), and buys exact
 // tests: with FMA, t differed from the textbook by up to 7e-6 relative on grazing rays, in
 // either direction, and primitives flipped at shared edges.
 //
