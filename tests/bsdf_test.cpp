@@ -9,21 +9,14 @@
 
 #include "core/bsdf.h"
 #include "core/fresnel.h"
+#include "bsdf_helpers.h"
 
 namespace wt {
 namespace {
 
-Material diffuse(MaterialType type, float albedo, float sigma = 0.0f) {
-    Material m;
-    m.type = type;
-    m.albedo = glm::vec3(albedo);
-    m.sigma = sigma;
-    return m;
-}
-
-glm::vec3 direction_at(float theta, float phi) {
-    return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-}
+using test::diffuse;
+using test::direction_at;
+using test::directional_albedo;
 
 const glm::vec3 kUp(0, 0, 1);
 
@@ -59,28 +52,11 @@ TEST(OrenNayar, BackscattersMoreThanLambertAtGrazingView) {
     EXPECT_GT(retro, forward);
 }
 
-// Directional albedo, the integral of f * cos over the hemisphere, by midpoint quadrature in
-// (cos^2 theta, phi), where the cosine-weighted measure is uniform.
-double directional_albedo_by_quadrature(const Material& m, const glm::vec3& wo) {
-    const int n = 400;
-    double sum = 0.0;
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-            const double cos2 = (i + 0.5) / n;
-            const float theta = float(std::acos(std::sqrt(cos2)));
-            const float phi = float(2.0 * M_PI * (j + 0.5) / n);
-            // f * cos dω = f * pi * d(cos^2 theta) d(phi) / (2 pi)
-            sum += eval_diffuse_bsdf(m, kUp, wo, direction_at(theta, phi)).x * kPi;
-        }
-    }
-    return sum / (double(n) * n);
-}
-
 TEST(OrenNayar, AlbedoNeverAboveRhoAtAnyRoughnessOrAngle) {
     for (float sigma : {0.0f, 0.3f, 0.9f, 2.0f, 10.0f}) {
         const Material m = diffuse(MaterialType::oren_nayar, 0.8f, sigma);
         for (float theta_o : {0.0f, 0.5f, 1.0f, 1.4f, 1.5607963f, 1.5707f}) {
-            const double albedo = directional_albedo_by_quadrature(m, direction_at(theta_o, 0.3f));
+            const double albedo = directional_albedo(m, direction_at(theta_o, 0.3f), 400);
             EXPECT_LE(albedo, 0.8 + 1e-3) << "sigma " << sigma << " theta_o " << theta_o;
             EXPECT_GT(albedo, 0.4) << "sigma " << sigma << " theta_o " << theta_o;
             EXPECT_TRUE(std::isfinite(albedo));

@@ -30,6 +30,7 @@
 #include <gtest/gtest.h>
 
 #include "core/bsdf.h"
+#include "bsdf_helpers.h"
 #include "core/fresnel.h"
 #include "core/path_vertex.h"
 #include "core/ray_offset.h"
@@ -43,6 +44,10 @@
 
 namespace wt {
 namespace {
+
+using test::diffuse;
+using test::direction_at;
+using test::directional_albedo;
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
@@ -1153,23 +1158,6 @@ Material oren_nayar(float sigma, float albedo = 0.8f) {
     return m;
 }
 
-glm::vec3 direction_at(double theta, double phi) {
-    return glm::vec3(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)));
-}
-
-// Directional albedo by midpoint quadrature in (cos^2 theta, phi), where the cosine-weighted
-// measure is uniform (as in bsdf_test.cpp).
-double directional_albedo(const Material& m, const glm::vec3& wo, int n) {
-    double sum = 0.0;
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-            const double cos2 = (i + 0.5) / n;
-            const glm::vec3 wi = direction_at(std::acos(std::sqrt(cos2)), 2.0 * M_PI * (j + 0.5) / n);
-            sum += double(eval_diffuse_bsdf(m, kUp, wo, wi).x) * M_PI;
-        }
-    }
-    return sum / (double(n) * n);
-}
 
 TEST(OrenNayarExtremes, GrazingViewAndLargeSigmaStayFiniteAndBelowRho) {
     const double half_pi = M_PI / 2.0;

@@ -27,6 +27,7 @@
 #include <gtest/gtest.h>
 
 #include "core/bsdf.h"
+#include "bsdf_helpers.h"
 #include "core/fresnel.h"
 #include "core/light_table.h"
 #include "core/rng.h"
@@ -42,6 +43,10 @@
 
 namespace wt {
 namespace {
+
+using test::diffuse;
+using test::direction_at;
+using test::directional_albedo;
 
 constexpr bool kLong = WT_LONG_TESTS != 0;
 constexpr int kSampleScale = kLong ? 20 : 1;  // samples per goodness-of-fit test, relative to CI
@@ -102,18 +107,6 @@ void expect_mean(const std::string& name, double mean, double standard_error, do
 }
 
 float uniform(uint64_t key, uint32_t i, uint32_t d) { return random_float(key, i, d); }
-
-glm::vec3 direction_at(double theta, double phi) {
-    return glm::vec3(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)));
-}
-
-Material diffuse(MaterialType type, float albedo, float sigma = 0.0f) {
-    Material m;
-    m.type = type;
-    m.albedo = glm::vec3(albedo);
-    m.sigma = sigma;
-    return m;
-}
 
 // ---- diffuse sampling: the whole sample_bsdf, not just the warp -----------------------------
 
@@ -186,18 +179,6 @@ TEST(SamplerGoodnessOfFit, OrenNayarSamplesTheCosineDistribution) {
     }
 }
 
-// Directional albedo by midpoint quadrature in (cos^2 theta, phi) (as in bsdf_test.cpp).
-double directional_albedo(const Material& m, const glm::vec3& wo, int n) {
-    double sum = 0.0;
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-            const double cos2 = (i + 0.5) / n;
-            const glm::vec3 wi = direction_at(std::acos(std::sqrt(cos2)), 2.0 * M_PI * (j + 0.5) / n);
-            sum += double(eval_diffuse_bsdf(m, glm::vec3(0, 0, 1), wo, wi).x) * M_PI;
-        }
-    }
-    return sum / (double(n) * n);
-}
 
 // The mean sampled weight (f cos / pdf) estimates the directional albedo: it must agree with
 // the quadrature within the sample's confidence interval. (At these view angles the weight is
