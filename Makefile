@@ -9,7 +9,8 @@ RENDER_DIR ?= renders
 
 .PHONY: render test test-long bench perf-gate perf-gate-update build deps configure clean
 
-render: build
+render: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
 	mkdir -p $(RENDER_DIR)
 	$(BUILD_DIR)/bin/wavetrace render $(SCENE) -o $(RENDER_DIR)/hexroom.png -o $(RENDER_DIR)/hexroom.exr
 
