@@ -31,5 +31,7 @@ else
   exit 1
 fi
 export DEBIAN_FRONTEND=noninteractive
-"${sudo[@]}" apt-get update -qq
-"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# Wait for another apt (unattended upgrades on a fresh machine) instead of failing at once.
+apt_wait=(-o DPkg::Lock::Timeout=600)
+"${sudo[@]}" apt-get "${apt_wait[@]}" update -qq
+"${sudo[@]}" apt-get "${apt_wait[@]}" install -y -qq --no-install-recommends "${missing[@]}"
