@@ -27,6 +27,7 @@ void TriangleSoA::push_back(const glm::vec3& a, const glm::vec3& given_b, const 
     v2x.push_back(c.x), v2y.push_back(c.y), v2z.push_back(c.z);
     e1x.push_back(e1.x), e1y.push_back(e1.y), e1z.push_back(e1.z);
     e2x.push_back(e2.x), e2y.push_back(e2.y), e2z.push_back(e2.z);
+    scaled_nx.push_back(cross.x), scaled_ny.push_back(cross.y), scaled_nz.push_back(cross.z);
     nx.push_back(n.x), ny.push_back(n.y), nz.push_back(n.z);
     material.push_back(material_id);
 }

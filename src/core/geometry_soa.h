@@ -18,8 +18,9 @@ namespace wt {
 // the light area they cover is below 2e-6 of their bounding rectangle.
 bool is_sliver(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 
-// Triangles stored for Moller-Trumbore: a vertex and the two edges leaving it, which is what
-// the test consumes, plus the unit geometric normal cross(e1, e2) for shading. The other two
+// Triangles stored for Moller-Trumbore: a vertex, the two edges leaving it and their cross
+// product cross(e1, e2) unnormalized (the "scaled normal", twice the area long), which is what
+// the test consumes, plus the unit geometric normal for shading. The other two
 // vertices are kept as given for the watertight test: rebuilt as v0 + e1 they would round
 // differently in neighbouring triangles, and the shared edge would no longer be shared.
 struct TriangleSoA {
@@ -28,6 +29,7 @@ struct TriangleSoA {
     AlignedVector<float> v2x, v2y, v2z;
     AlignedVector<float> e1x, e1y, e1z;
     AlignedVector<float> e2x, e2y, e2z;
+    AlignedVector<float> scaled_nx, scaled_ny, scaled_nz;
     AlignedVector<float> nx, ny, nz;
     AlignedVector<uint32_t> material;
 
@@ -39,6 +41,7 @@ struct TriangleSoA {
     glm::vec3 vertex2(std::size_t i) const { return {v2x[i], v2y[i], v2z[i]}; }
     glm::vec3 edge1(std::size_t i) const { return {e1x[i], e1y[i], e1z[i]}; }
     glm::vec3 edge2(std::size_t i) const { return {e2x[i], e2y[i], e2z[i]}; }
+    glm::vec3 scaled_normal(std::size_t i) const { return {scaled_nx[i], scaled_ny[i], scaled_nz[i]}; }
     glm::vec3 normal(std::size_t i) const { return {nx[i], ny[i], nz[i]}; }
 };
 

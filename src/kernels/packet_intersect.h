@@ -4,7 +4,7 @@
 // translation units, and per accuracy setting as template parameters.
 //
 // The arithmetic is exactly the scalar code's (primitive_intersect.h): the same products, sums in
-// the same order, one IEEE division, and no fused multiply-add (the build passes
+// the same order, the same IEEE divisions, and no fused multiply-add (the build passes
 // -ffp-contract=off and this file calls no madd). Every width on every ISA therefore returns
 // the same bits as the scalar code, so an image is identical whichever kernels rendered it.
 // That cost about 8% end to end against an FMA version (hexroom 200x200, 16 spp, one thread,
@@ -110,47 +110,72 @@ struct TriangleRays<TriangleTest::watertight, N> {
     }
 };
 
-// Triangle data as each test reads it: v0 and the edges for Moller-Trumbore, the three
-// vertices for the watertight test.
+// Triangle data as each test reads it: v0, the edges and the scaled normal for
+// Moller-Trumbore, the three vertices for the watertight test (n unused).
 template <int N>
 struct TriangleLanes {
-    Vec3<N> p0, p1, p2;
+    Vec3<N> p0, p1, p2, n;
 };
+
+// One primitive test per lane. The barycentrics stay a numerator and a denominator until the
+// closest hit is known, so a ray pays two divisions for its u, v instead of two per primitive.
+template <int N>
+struct LaneHits {
+    vfloat<N> t, u_num, v_num, den;
+};
+
+template <int N>
+inline LaneHits<N> select(const vbool<N>& m, const LaneHits<N>& a, const LaneHits<N>& b) {
+    return {simd::select(m, a.t, b.t), simd::select(m, a.u_num, b.u_num), simd::select(m, a.v_num, b.v_num),
+            simd::select(m, a.den, b.den)};
+}
+
+// What a sphere hit (or no hit) keeps: u = v = 0 / 1.
+template <int N>
+inline LaneHits<N> sphere_hits(const vfloat<N>& t) {
+    return {t, vfloat<N>(0.0f), vfloat<N>(0.0f), vfloat<N>(1.0f)};
+}
 
 template <TriangleTest T, int N>
 inline TriangleLanes<N> broadcast_triangle(const TriangleView& t, uint32_t i) {
     if constexpr (T == TriangleTest::watertight)
-        return {broadcast<N>(t.v0x, t.v0y, t.v0z, i), broadcast<N>(t.v1x, t.v1y, t.v1z, i), broadcast<N>(t.v2x, t.v2y, t.v2z, i)};
+        return {broadcast<N>(t.v0x, t.v0y, t.v0z, i), broadcast<N>(t.v1x, t.v1y, t.v1z, i), broadcast<N>(t.v2x, t.v2y, t.v2z, i), {}};
     else
-        return {broadcast<N>(t.v0x, t.v0y, t.v0z, i), broadcast<N>(t.e1x, t.e1y, t.e1z, i), broadcast<N>(t.e2x, t.e2y, t.e2z, i)};
+        return {broadcast<N>(t.v0x, t.v0y, t.v0z, i), broadcast<N>(t.e1x, t.e1y, t.e1z, i), broadcast<N>(t.e2x, t.e2y, t.e2z, i),
+                broadcast<N>(t.nx, t.ny, t.nz, i)};
 }
 
 template <TriangleTest T, int N>
 inline TriangleLanes<N> load_triangles(const TriangleView& t, uint32_t first, int count) {
     if constexpr (T == TriangleTest::watertight)
         return {load_partial<N>(t.v0x, t.v0y, t.v0z, first, count), load_partial<N>(t.v1x, t.v1y, t.v1z, first, count),
-                load_partial<N>(t.v2x, t.v2y, t.v2z, first, count)};
+                load_partial<N>(t.v2x, t.v2y, t.v2z, first, count), {}};
     else
         return {load_partial<N>(t.v0x, t.v0y, t.v0z, first, count), load_partial<N>(t.e1x, t.e1y, t.e1z, first, count),
-                load_partial<N>(t.e2x, t.e2y, t.e2z, first, count)};
+                load_partial<N>(t.e2x, t.e2y, t.e2z, first, count), load_partial<N>(t.nx, t.ny, t.nz, first, count)};
 }
 
-// Moller-Trumbore. A lane hits when t is in (0, tmax) and the barycentrics are inside;
-// det == 0 (parallel ray, degenerate triangle) and NaNs never hit.
+// Moller-Trumbore with the precomputed scaled normal, as intersect_triangle() in
+// primitive_intersect.h (which explains the rearrangement). A lane hits when t is in (0, tmax)
+// and the barycentrics are inside; den == 0 (parallel ray, degenerate triangle) and NaNs never hit.
 template <int N>
 inline vbool<N> intersect_triangles(const TriangleRays<TriangleTest::moller_trumbore, N>& r, const TriangleLanes<N>& tri,
-                                    const vbool<N>&, const vfloat<N>& tmax, vfloat<N>& t, vfloat<N>& u, vfloat<N>& v) {
-    const Vec3<N>&v0 = tri.p0, &e1 = tri.p1, &e2 = tri.p2;
-    const Vec3<N> p = cross(r.d, e2);
-    const vfloat<N> det = dot(e1, p);
-    const vfloat<N> inv_det = vfloat<N>(1.0f) / det;
-    const Vec3<N> s = r.o - v0;
-    u = dot(s, p) * inv_det;
-    const Vec3<N> q = cross(s, e1);
-    v = dot(r.d, q) * inv_det;
-    t = dot(e2, q) * inv_det;
-    const vfloat<N> zero(0.0f), one(1.0f);
-    return (det != zero) & (u >= zero) & (u <= one) & (v >= zero) & (u + v <= one) & (t > zero) & (t < tmax);
+                                    const vbool<N>&, const vfloat<N>& tmax, LaneHits<N>& h) {
+    const Vec3<N>&v0 = tri.p0, &e1 = tri.p1, &e2 = tri.p2, &n = tri.n;
+    const vfloat<N> den = dot(r.d, n);
+    const Vec3<N> c = v0 - r.o;
+    const Vec3<N> cr = cross(c, r.d);
+    h.den = simd::abs(den);
+    h.u_num = simd::flip_sign(dot(e2, cr), den);
+    h.v_num = -simd::flip_sign(dot(e1, cr), den);
+    h.t = dot(c, n) / den;  // the same bits as flip_sign(c.n, den) / |den|: IEEE division is sign-symmetric
+    // No den != 0 test: with den = 0, t is +-inf or NaN and fails 0 < t < tmax anyway. The
+    // tests are paired, not chained, so their masks combine in a shallow tree; the test against
+    // tmax (the closest hit so far, carried from primitive to primitive) comes last, keeping
+    // the loop-carried dependency one compare long.
+    const vfloat<N> zero(0.0f);
+    const vbool<N> inside = ((h.u_num >= zero) & (h.v_num >= zero)) & ((h.u_num + h.v_num <= h.den) & (h.t > zero));
+    return inside & (h.t < tmax);
 }
 
 // px*qy - py*qx, recomputed in double in the lanes where float gives exactly 0 (as
@@ -175,8 +200,7 @@ inline vfloat<N> edge_function(const vfloat<N>& px, const vfloat<N>& py, const v
 // Woop, Benthin & Wald 2013, as intersect_triangle_watertight() in primitive_intersect.h.
 template <int N>
 inline vbool<N> intersect_triangles(const TriangleRays<TriangleTest::watertight, N>& r, const TriangleLanes<N>& tri,
-                                    const vbool<N>& active, const vfloat<N>& tmax, vfloat<N>& t, vfloat<N>& u,
-                                    vfloat<N>& v) {
+                                    const vbool<N>& active, const vfloat<N>& tmax, LaneHits<N>& h) {
     const Vec3<N> a = tri.p0 - r.o, b = tri.p1 - r.o, c = tri.p2 - r.o;
     const vfloat<N> az = pick(a, r.kz0, r.kz1), bz = pick(b, r.kz0, r.kz1), cz = pick(c, r.kz0, r.kz1);
     const vfloat<N> ax = pick(a, r.kx0, r.kx1) - r.sx * az, ay = pick(a, r.ky0, r.ky1) - r.sy * az;
@@ -189,11 +213,11 @@ inline vbool<N> intersect_triangles(const TriangleRays<TriangleTest::watertight,
     const vbool<N> mixed_signs = ((w0 < zero) | (w1 < zero) | (w2 < zero)) & ((w0 > zero) | (w1 > zero) | (w2 > zero));
     const vfloat<N> det = w0 + w1 + w2;
     const vfloat<N> scaled_t = w0 * (r.sz * az) + w1 * (r.sz * bz) + w2 * (r.sz * cz);
-    const vfloat<N> inv_det = vfloat<N>(1.0f) / det;
-    t = scaled_t * inv_det;
-    u = w1 * inv_det;
-    v = w2 * inv_det;
-    return ~mixed_signs & (det != zero) & (t > zero) & (t < tmax);
+    h.t = scaled_t / det;
+    h.u_num = w1;
+    h.v_num = w2;
+    h.den = det;
+    return ~mixed_signs & (det != zero) & (h.t > zero) & (h.t < tmax);
 }
 
 // The textbook quadratic: t = -b -+ sqrt(b^2 - c), the far root for origins inside.
@@ -258,31 +282,29 @@ void closest_raypacket(const SceneView& scene, const RayView& rays, const HitVie
     for (uint32_t first = 0; first < rays.count; first += N) {
         const RayPacket<N> r = load_rays<N>(rays, first);
         const TriangleRays<T, N> tr(r.o, r.d);
-        vfloat<N> best_t = r.tmax, best_u(0.0f), best_v(0.0f);
-        vint<N> best_prim(-1);
+        LaneHits<N> best = sphere_hits(r.tmax);
+        vint<N> best_prim(-1), prim(0);
         // Branch-free: with incoherent rays "no lane hit this primitive" is a coin flip, and
-        // the mispredicted branch cost more than the four selects it skipped (bench/README.md).
-        for (uint32_t i = 0; i < tri.count; ++i) {
-            vfloat<N> t, u, v;
-            const vbool<N> hit = intersect_triangles(tr, broadcast_triangle<T, N>(tri, i), r.active, best_t, t, u, v);
-            best_t = simd::select(hit, t, best_t);
-            best_u = simd::select(hit, u, best_u);
-            best_v = simd::select(hit, v, best_v);
-            best_prim = simd::select(hit, vint<N>(int32_t(i)), best_prim);
+        // the mispredicted branch cost more than the selects it skipped (bench/README.md).
+        // The primitive id rides along as a vector (one add) rather than a broadcast of i,
+        // which the compiler turned into three moves.
+        for (uint32_t i = 0; i < tri.count; ++i, prim += vint<N>(1)) {
+            LaneHits<N> h;
+            const vbool<N> hit = intersect_triangles(tr, broadcast_triangle<T, N>(tri, i), r.active, best.t, h);
+            best = select(hit, h, best);
+            best_prim = simd::select(hit, prim, best_prim);
         }
         for (uint32_t i = 0; i < sph.count; ++i) {
             vfloat<N> t;
             const vbool<N> hit = intersect_spheres<S>(r.o, r.d, broadcast<N>(sph.cx, sph.cy, sph.cz, i),
-                                                                 vfloat<N>(sph.radius[i]), best_t, t);
-            best_t = simd::select(hit, t, best_t);
-            best_u = simd::select(hit, vfloat<N>(0.0f), best_u);
-            best_v = simd::select(hit, vfloat<N>(0.0f), best_v);
+                                                                 vfloat<N>(sph.radius[i]), best.t, t);
+            best = select(hit, sphere_hits(t), best);
             best_prim = simd::select(hit, vint<N>(int32_t(sph.first_prim + i)), best_prim);
         }
-        best_t = simd::select(best_prim == vint<N>(-1), vfloat<N>(kInfinity), best_t);
+        const vfloat<N> best_t = simd::select(best_prim == vint<N>(-1), vfloat<N>(kInfinity), best.t);
         vfloat<N>::store_partial(hits.t + first, best_t, r.count);
-        vfloat<N>::store_partial(hits.u + first, best_u, r.count);
-        vfloat<N>::store_partial(hits.v + first, best_v, r.count);
+        vfloat<N>::store_partial(hits.u + first, best.u_num / best.den, r.count);
+        vfloat<N>::store_partial(hits.v + first, best.v_num / best.den, r.count);
         vint<N>::store_partial(reinterpret_cast<int32_t*>(hits.prim + first), best_prim, r.count);
     }
 }
@@ -297,8 +319,8 @@ void any_raypacket(const SceneView& scene, const RayView& rays, uint8_t* occlude
         vbool<N> blocked(false);
         const vbool<N> inactive = ~r.active;
         for (uint32_t i = 0; i < tri.count && !simd::all(blocked | inactive); ++i) {
-            vfloat<N> t, u, v;
-            blocked |= intersect_triangles(tr, broadcast_triangle<T, N>(tri, i), r.active, r.tmax, t, u, v);
+            LaneHits<N> h;
+            blocked |= intersect_triangles(tr, broadcast_triangle<T, N>(tri, i), r.active, r.tmax, h);
         }
         for (uint32_t i = 0; i < sph.count && !simd::all(blocked | inactive); ++i) {
             vfloat<N> t;
@@ -338,16 +360,14 @@ void closest_primpacket(const SceneView& scene, const RayView& rays, const HitVi
         const TriangleRays<T, N> tr(r.o, r.d);
         // Each lane keeps the closest of the primitives it saw (its own strict <, in index
         // order, like the scalar loop); the lanes are reduced once at the end.
-        vfloat<N> best_t(r.tmax), best_u(0.0f), best_v(0.0f);
+        LaneHits<N> best = sphere_hits(vfloat<N>(r.tmax));
         vint<N> best_prim(-1);
         for (uint32_t first = 0; first < tri.count; first += N) {
             const int n = lanes_left<N>(tri.count, first);
             const vbool<N> lanes = vint<N>::step() < vint<N>(n);
-            vfloat<N> t, u, v;
-            const vbool<N> hit = lanes & intersect_triangles(tr, load_triangles<T, N>(tri, first, n), lanes, best_t, t, u, v);
-            best_t = simd::select(hit, t, best_t);
-            best_u = simd::select(hit, u, best_u);
-            best_v = simd::select(hit, v, best_v);
+            LaneHits<N> h;
+            const vbool<N> hit = lanes & intersect_triangles(tr, load_triangles<T, N>(tri, first, n), lanes, best.t, h);
+            best = select(hit, h, best);
             best_prim = simd::select(hit, vint<N>::step() + vint<N>(int32_t(first)), best_prim);
         }
         for (uint32_t first = 0; first < sph.count; first += N) {
@@ -356,15 +376,13 @@ void closest_primpacket(const SceneView& scene, const RayView& rays, const HitVi
             const vfloat<N> radius = vfloat<N>::load_partial(sph.radius + first, n, vfloat<N>(0.0f));
             const vbool<N> hit = (vint<N>::step() < vint<N>(n)) &
                                  intersect_spheres<S>(r.o, r.d, load_partial<N>(sph.cx, sph.cy, sph.cz, first, n), radius,
-                                                      best_t, t);
-            best_t = simd::select(hit, t, best_t);
-            best_u = simd::select(hit, vfloat<N>(0.0f), best_u);
-            best_v = simd::select(hit, vfloat<N>(0.0f), best_v);
+                                                      best.t, t);
+            best = select(hit, sphere_hits(t), best);
             best_prim = simd::select(hit, vint<N>::step() + vint<N>(int32_t(sph.first_prim + first)), best_prim);
         }
         // Closest over the lanes; on an exact tie the lowest primitive id wins, as in the scalar loop.
-        const float closest = simd::reduce_min(best_t);
-        uint32_t candidates = simd::movemask((best_t == vfloat<N>(closest)) & (best_prim != vint<N>(-1)));
+        const float closest = simd::reduce_min(best.t);
+        uint32_t candidates = simd::movemask((best.t == vfloat<N>(closest)) & (best_prim != vint<N>(-1)));
         int winner = -1;
         for (; candidates; candidates &= candidates - 1) {
             const int lane = __builtin_ctz(candidates);
@@ -373,7 +391,9 @@ void closest_primpacket(const SceneView& scene, const RayView& rays, const HitVi
         if (winner < 0) {
             hits.t[ray] = kInfinity, hits.u[ray] = 0.0f, hits.v[ray] = 0.0f, hits.prim[ray] = UINT32_MAX;
         } else {
-            hits.t[ray] = best_t[winner], hits.u[ray] = best_u[winner], hits.v[ray] = best_v[winner];
+            hits.t[ray] = best.t[winner];
+            hits.u[ray] = best.u_num[winner] / best.den[winner];
+            hits.v[ray] = best.v_num[winner] / best.den[winner];
             hits.prim[ray] = uint32_t(best_prim[winner]);
         }
     }
@@ -391,8 +411,8 @@ void any_primpacket(const SceneView& scene, const RayView& rays, uint8_t* occlud
         for (uint32_t first = 0; first < tri.count && !blocked; first += N) {
             const int n = lanes_left<N>(tri.count, first);
             const vbool<N> lanes = vint<N>::step() < vint<N>(n);
-            vfloat<N> t, u, v;
-            blocked = simd::any(lanes & intersect_triangles(tr, load_triangles<T, N>(tri, first, n), lanes, tmax, t, u, v));
+            LaneHits<N> h;
+            blocked = simd::any(lanes & intersect_triangles(tr, load_triangles<T, N>(tri, first, n), lanes, tmax, h));
         }
         for (uint32_t first = 0; first < sph.count && !blocked; first += N) {
             const int n = lanes_left<N>(sph.count, first);

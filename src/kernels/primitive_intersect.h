@@ -13,26 +13,32 @@
 
 namespace wt {
 
-// Moller & Trumbore 1997, two-sided. On a hit closer than hit.t, updates hit and returns true.
+// Moller & Trumbore 1997, two-sided, rearranged with the scalar triple product (as Embree's
+// Moller-Trumbore intersector is) so that the triangle's scaled normal n = cross(e1, e2) is
+// read instead of recomputed. With c = v0 - o and r = cross(c, d):
+//     den = d.n,   u = (e2.r) / den,   v = -(e1.r) / den,   t = (c.n) / den.
+// That is 18 multiplications per ray and triangle where the textbook order takes 27, and the
+// SIMD kernels are bound by multiplications. den's sign is moved onto the numerators (exact),
+// so the inside tests compare numerators with |den| and u, v are divided out only for a hit
+// that is kept; packet_intersect.h does the same arithmetic in the same order, so every
+// kernel returns these bits.
 inline bool intersect_triangle(const TriangleSoA& tris, uint32_t i, const Ray& ray, Hit& hit) {
-    const glm::vec3 e1 = tris.edge1(i);
-    const glm::vec3 e2 = tris.edge2(i);
-    const glm::vec3 p = glm::cross(ray.direction, e2);
-    const float det = glm::dot(e1, p);
-    if (det == 0.0f) return false;  // ray parallel to the plane, or a degenerate triangle
-    const float inv_det = 1.0f / det;
-    const glm::vec3 s = ray.origin - tris.vertex0(i);
-    const float u = glm::dot(s, p) * inv_det;
-    if (!(u >= 0.0f && u <= 1.0f)) return false;
-    const glm::vec3 q = glm::cross(s, e1);
-    const float v = glm::dot(ray.direction, q) * inv_det;
-    if (!(v >= 0.0f && u + v <= 1.0f)) return false;
-    const float t = glm::dot(e2, q) * inv_det;
+    const glm::vec3 n = tris.scaled_normal(i);
+    const float den = glm::dot(ray.direction, n);
+    if (den == 0.0f) return false;  // ray parallel to the plane, or a degenerate triangle
+    const bool flip = den < 0.0f;
+    const float abs_den = std::fabs(den);
+    const glm::vec3 c = tris.vertex0(i) - ray.origin;
+    const glm::vec3 r = glm::cross(c, ray.direction);
+    const float u_num = flip ? -glm::dot(tris.edge2(i), r) : glm::dot(tris.edge2(i), r);
+    const float v_num = -(flip ? -glm::dot(tris.edge1(i), r) : glm::dot(tris.edge1(i), r));
+    if (!(u_num >= 0.0f && v_num >= 0.0f && u_num + v_num <= abs_den)) return false;
+    const float t = glm::dot(c, n) / den;
     if (!(t > 0.0f && t < hit.t)) return false;
     hit.t = t;
     hit.prim = i;
-    hit.u = u;
-    hit.v = v;
+    hit.u = u_num / abs_den;
+    hit.v = v_num / abs_den;
     return true;
 }
 
@@ -81,13 +87,14 @@ inline bool intersect_triangle_watertight(const TriangleSoA& tris, uint32_t i, c
     const float det = u + v + e;
     if (det == 0.0f) return false;
     const float scaled_t = u * (w.sz * a[w.kz]) + v * (w.sz * b[w.kz]) + e * (w.sz * c[w.kz]);
-    const float inv_det = 1.0f / det;
-    const float t = scaled_t * inv_det;
+    // Divided, not multiplied by 1/det: the SIMD kernels divide u and v only for the hit they
+    // keep, and must get these bits.
+    const float t = scaled_t / det;
     if (!(t > 0.0f && t < hit.t)) return false;
     hit.t = t;
     hit.prim = i;
-    hit.u = v * inv_det;
-    hit.v = e * inv_det;
+    hit.u = v / det;
+    hit.v = e / det;
     return true;
 }
 

@@ -10,8 +10,9 @@ namespace wt {
 
 struct TriangleView {
     const float *v0x, *v0y, *v0z;
-    const float *e1x, *e1y, *e1z;  // Moller-Trumbore reads the edges
+    const float *e1x, *e1y, *e1z;  // Moller-Trumbore reads the edges and the scaled normal
     const float *e2x, *e2y, *e2z;
+    const float *nx, *ny, *nz;     // cross(e1, e2), unnormalized
     const float *v1x, *v1y, *v1z;  // the watertight test reads the vertices
     const float *v2x, *v2y, *v2z;
     uint32_t count;
