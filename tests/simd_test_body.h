@@ -720,6 +720,22 @@ TYPED_TEST_P(SimdWidth, FloatComparisons) {
     });
 }
 
+// flip_sign against an oracle written with std::signbit, on the operand set's NaNs, zeros,
+// infinities and subnormals: a's bits with the sign toggled exactly where b's sign bit is set.
+TYPED_TEST_P(SimdWidth, FlipSign) {
+    using W = TypeParam;
+    using F = typename W::F;
+    constexpr int n = W::N;
+    const FloatOperands ops = float_operands(83);
+    for_each_packet<W>(ops, [](F a, F b, F) {
+        const F got = flip_sign(a, b);
+        for (int i = 0; i < n; ++i) {
+            const uint32_t want = float_to_bits(a[i]) ^ (std::signbit(b[i]) ? 0x80000000u : 0u);
+            ASSERT_EQ(float_to_bits(got[i]), want) << "flip_sign(" << show(a[i]) << ", " << show(b[i]) << ")";
+        }
+    });
+}
+
 TYPED_TEST_P(SimdWidth, SelectEveryPattern) {
     using W = TypeParam;
     using F = typename W::F;
@@ -942,7 +958,7 @@ TYPED_TEST_P(SimdWidth, ConversionsAndBitCasts) {
 REGISTER_TYPED_TEST_SUITE_P(SimdWidth, TraitsStepBroadcastAndLaneAccess, AlignedAndUnalignedLoadStore,
                             LoadPartialEveryCount, StorePartialEveryCount, MaskedLoadStoreEveryPattern,
                             GatherAndMaskedGather, FloatArithmetic, FusedMultiplyAdd, MinMaxNaNAndSignedZero,
-                            AbsSqrtRcpRsqrtFloorCeil, FastReciprocalsWithinUlpBound, FloatComparisons,
+                            AbsSqrtRcpRsqrtFloorCeil, FastReciprocalsWithinUlpBound, FloatComparisons, FlipSign,
                             SelectEveryPattern, MaskLogicEveryPattern, HorizontalReductions, SelectMinIndex,
                             IntArithmeticAndBitwise, IntShiftsEveryCount, ConversionsAndBitCasts);
 
