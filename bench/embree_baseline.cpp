@@ -126,18 +126,22 @@ EmbreeBaseline::EmbreeBaseline(const Scene& scene) : impl_(std::make_unique<Impl
     impl_->scene = rtcNewScene(impl_->device);
     impl_->triangle_count = uint32_t(scene.triangles.size());
 
+    // One Embree quad per entry, so primID is our id: a parallelogram is the quad v0, v0 + e1,
+    // v0 + e1 + e2, v0 + e2, and a triangle the quad with its last vertex repeated (Embree's
+    // documented encoding of a triangle in a quad mesh).
     const TriangleSoA& t = scene.triangles;
-    RTCGeometry triangles = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    RTCGeometry triangles = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_QUAD);
     auto* vertices = static_cast<float*>(
-        rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * t.size()));
+        rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * t.size()));
     auto* indices = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), t.size()));
+        rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), t.size()));
     for (std::size_t i = 0; i < t.size(); ++i) {
-        const glm::vec3 corners[3] = {t.vertex0(i), t.vertex0(i) + t.edge1(i), t.vertex0(i) + t.edge2(i)};
-        for (int c = 0; c < 3; ++c) {
-            float* v = vertices + 3 * (3 * i + std::size_t(c));
+        const glm::vec3 v0 = t.vertex0(i), v1 = v0 + t.edge1(i), v3 = v0 + t.edge2(i);
+        const glm::vec3 corners[4] = {v0, v1, t.is_parallelogram(i) ? v0 + t.edge1(i) + t.edge2(i) : v3, v3};
+        for (int c = 0; c < 4; ++c) {
+            float* v = vertices + 3 * (4 * i + std::size_t(c));
             v[0] = corners[c].x, v[1] = corners[c].y, v[2] = corners[c].z;
-            indices[3 * i + std::size_t(c)] = unsigned(3 * i + std::size_t(c));
+            indices[4 * i + std::size_t(c)] = unsigned(4 * i + std::size_t(c));
         }
     }
     rtcCommitGeometry(triangles);

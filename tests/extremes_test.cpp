@@ -179,8 +179,12 @@ std::string sanity_problem(const Scene& scene, const Query& q, const Answer& a) 
     if (a.prim >= scene.primitive_count()) return "primitive id out of range";
     if (!(std::isfinite(a.t) && a.t > 0.0f && a.t < q.tmax)) return "hit distance not finite or outside (0, tmax)";
     if (!std::isfinite(a.u) || !std::isfinite(a.v)) return "barycentrics not finite";
-    // u + v may exceed 1 by an ulp or two where u and v are two separate divisions (watertight).
-    if (a.prim < scene.triangles.size() && !(a.u >= 0.0f && a.v >= 0.0f && a.u + a.v <= 1.0f + 0x1p-22f))
+    // u + v may exceed 1 by an ulp or two: u and v are two separate divisions. A
+    // parallelogram's u and v are each in [0, 1], exactly (u_num <= den gives u_num / den <= 1).
+    if (scene.triangles.is_parallelogram(a.prim) && !(a.u >= 0.0f && a.v >= 0.0f && a.u <= 1.0f && a.v <= 1.0f))
+        return "barycentrics outside the parallelogram";
+    if (a.prim < scene.triangles.size() && !scene.triangles.is_parallelogram(a.prim) &&
+        !(a.u >= 0.0f && a.v >= 0.0f && a.u + a.v <= 1.0f + 0x1p-22f))
         return "barycentrics outside the triangle";
     return "";
 }

@@ -91,5 +91,15 @@ TEST(EdgeSettings, OnePixelOneSampleAndTilesLargerThanTheImage) {
     EXPECT_EQ(r.result.counts.nonfinite_samples, 0u);
 }
 
+// The watertight test knows no parallelograms: a scene built for Moller-Trumbore and then
+// switched to watertight would render its rectangles as half-triangles, so render refuses it.
+TEST(EdgeSettings, WatertightRenderOfAParallelogramSceneIsRefused) {
+    Scene scene = build_scene(test::hexroom(2, 2, 1));
+    ASSERT_GT(scene.triangles.parallelogram_count, 0u);
+    scene.settings.accuracy.triangles = TriangleTest::watertight;
+    Film film(2, 2);
+    EXPECT_THROW(render(scene, RenderOptions{}, film), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace wt

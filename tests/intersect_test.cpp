@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -32,6 +33,36 @@ TEST(TriangleIntersect, HitsInteriorWithBarycentricsAndDistance) {
     EXPECT_FLOAT_EQ(h.t, 2.0f);
     EXPECT_FLOAT_EQ(h.u, 0.25f);
     EXPECT_FLOAT_EQ(h.v, 0.5f);
+}
+
+// ---- parallelograms: the same test with u <= 1 and v <= 1 in place of u + v <= 1 ----------
+
+TriangleSoA unit_square() {  // (0,0)-(1,1) in the plane z = 0
+    TriangleSoA t;
+    t.push_parallelogram({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0);
+    return t;
+}
+
+TEST(ParallelogramIntersect, CoversTheHalfATriangleWouldMiss) {
+    const Hit h = hit_triangle(unit_square(), {0.75f, 0.625f, 2.0f}, {0, 0, -1});
+    ASSERT_TRUE(h.found());
+    EXPECT_FLOAT_EQ(h.t, 2.0f);
+    EXPECT_FLOAT_EQ(h.u, 0.75f);
+    EXPECT_FLOAT_EQ(h.v, 0.625f);
+    EXPECT_FALSE(hit_triangle(unit_triangle(), {0.75f, 0.625f, 2.0f}, {0, 0, -1}).found());
+}
+
+TEST(ParallelogramIntersect, FarEdgesAndCornerAreInsideAndJustBeyondIsNot) {
+    const float beyond = std::nextafter(1.0f, 2.0f);
+    for (glm::vec3 at : {glm::vec3(1, 0.5f, 0), glm::vec3(0.5f, 1, 0), glm::vec3(1, 1, 0)})
+        EXPECT_TRUE(hit_triangle(unit_square(), at + glm::vec3(0, 0, 1), {0, 0, -1}).found()) << at.x << " " << at.y;
+    for (glm::vec3 at : {glm::vec3(beyond, 0.5f, 0), glm::vec3(0.5f, beyond, 0), glm::vec3(beyond, beyond, 0)})
+        EXPECT_FALSE(hit_triangle(unit_square(), at + glm::vec3(0, 0, 1), {0, 0, -1}).found()) << at.x << " " << at.y;
+}
+
+TEST(ParallelogramIntersect, MustComeBeforeEveryTriangle) {
+    TriangleSoA t = unit_triangle();
+    EXPECT_THROW(t.push_parallelogram({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0), std::logic_error);
 }
 
 TEST(TriangleIntersect, IsTwoSided) {

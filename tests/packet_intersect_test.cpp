@@ -94,6 +94,13 @@ protected:
         scene_ = build_scene(test::hexroom(8, 8, 1));
         rays_ = hexroom_rays(scene_, kRandomRays);
     }
+    // The hexroom as built for these accuracy settings: quads become parallelograms for
+    // Moller-Trumbore and triangle pairs for the watertight test.
+    void rebuild_for(const AccuracySettings& accuracy) {
+        SceneDescription d = test::hexroom(8, 8, 1);
+        d.settings.accuracy = accuracy;
+        scene_ = build_scene(d);
+    }
     Scene scene_;
     RayBatch rays_;
 };
@@ -110,7 +117,7 @@ std::vector<AccuracySettings> accuracy_variants() {
 TEST_P(PacketIntersect, ClosestHitEqualsScalarInBothLayouts) {
   for (const AccuracySettings& accuracy : accuracy_variants()) {
     SCOPED_TRACE(std::string(name_of(accuracy.triangles)) + " + " + name_of(accuracy.spheres));
-    scene_.settings.accuracy = accuracy;
+    rebuild_for(accuracy);
     const IntersectKernels& k = intersect_kernels(GetParam(), accuracy);
     const SceneView view = scene_view(scene_);
     const std::size_t n = rays_.ox.size();
@@ -134,7 +141,7 @@ TEST_P(PacketIntersect, ClosestHitEqualsScalarInBothLayouts) {
 TEST_P(PacketIntersect, AnyHitEqualsScalarInBothLayouts) {
     for (const AccuracySettings& accuracy : accuracy_variants()) {
         SCOPED_TRACE(std::string(name_of(accuracy.triangles)) + " + " + name_of(accuracy.spheres));
-        scene_.settings.accuracy = accuracy;
+        rebuild_for(accuracy);
         const IntersectKernels& k = intersect_kernels(GetParam(), accuracy);
         const SceneView view = scene_view(scene_);
         const std::size_t n = rays_.ox.size();
@@ -180,6 +187,7 @@ TEST_P(PacketIntersect, SceneWithoutSpheresOrTriangles) {
     k.closest_raypacket(view, rays_.view(false, 0, 64), {t.data(), u.data(), v.data(), prim.data()});
     for (std::size_t i = 0; i < 64; ++i) EXPECT_LT(prim[i], scene_.triangles.size());  // closed room: always a wall
     view.triangles.count = 0;
+    view.triangles.parallelogram_count = 0;
     view.spheres.count = 0;
     k.closest_primpacket(view, rays_.view(false, 0, 64), {t.data(), u.data(), v.data(), prim.data()});
     for (std::size_t i = 0; i < 64; ++i) {

@@ -1,4 +1,5 @@
 #include "core/scene_loader.h"
+#include "core/scene.h"
 
 #include <array>
 #include <cmath>
@@ -226,6 +227,16 @@ TEST(SceneLoader, SectionOrderDoesNotMatter) {
     EXPECT_EQ(scene.spheres[0].material, 4u);
 }
 
+// A quad is marked a parallelogram exactly when v2 = v1 + v3 - v0 as written; a planar
+// trapezoid is still a valid quad, just not one.
+TEST(SceneLoader, QuadIsMarkedParallelogramOnlyWhenItIsOne) {
+    EXPECT_TRUE(parse_scene_json(kValidScene, kSource).meshes[0].parallelogram);
+    const SceneDescription trapezoid =
+        parse_scene_json(replaced("[6, 1, 2], [6, -1, 2]", "[6, 1.5, 2], [6, -1, 2]"), kSource);
+    EXPECT_FALSE(trapezoid.meshes[0].parallelogram);
+    EXPECT_FALSE(trapezoid.meshes[1].parallelogram) << "a mesh is never one";
+}
+
 // ---------------------------------------------------------------------------------------------
 // The reference scenes
 
@@ -261,6 +272,28 @@ TEST_F(HexRoom, Counts) {
     EXPECT_EQ(room_triangles, 20u);
     EXPECT_EQ(lights, 1u);
     EXPECT_EQ(tetras, 1u);
+}
+
+// Moller-Trumbore scenes store the 7 rectangles (6 walls, the light) as parallelograms ahead
+// of the 12 triangles; the watertight test gets all 26 triangles.
+TEST_F(HexRoom, QuadsBecomeParallelogramsOnlyForMollerTrumbore) {
+    std::size_t parallelogram_quads = 0;
+    for (const TriangleMesh& mesh : scene.meshes) parallelogram_quads += mesh.parallelogram;
+    EXPECT_EQ(parallelogram_quads, 7u);
+
+    scene.settings.accuracy.triangles = TriangleTest::moller_trumbore;
+    const wt::Scene mt = wt::build_scene(scene);
+    EXPECT_EQ(mt.triangles.parallelogram_count, 7u);
+    EXPECT_EQ(mt.triangles.size(), 7u + 12u);
+    // The first wall: v0 = (-3, 0, -5), spanned by v1 - v0 and v3 - v0.
+    expect_vec3_eq(mt.triangles.vertex0(0), {-3, 0, -5});
+    expect_vec3_eq(mt.triangles.edge1(0), {3, 6, 0});
+    expect_vec3_eq(mt.triangles.edge2(0), {0, 0, 10});
+
+    scene.settings.accuracy.triangles = TriangleTest::watertight;
+    const wt::Scene watertight = wt::build_scene(scene);
+    EXPECT_EQ(watertight.triangles.parallelogram_count, 0u);
+    EXPECT_EQ(watertight.triangles.size(), 26u);
 }
 
 TEST_F(HexRoom, RoomNormalsPointInward) {

@@ -66,7 +66,8 @@ const char* const kGoodnessOfFitFamily[] = {
     "oren_nayar_mean_weight_sigma_0.3_view_30deg",
     "oren_nayar_mean_weight_sigma_0.9_view_60deg",
     "oren_nayar_mean_weight_sigma_2_view_75deg",
-    "hexroom_light_uniform_over_area",
+    "hexroom_light_uniform_over_area_moller_trumbore",
+    "hexroom_light_uniform_over_area_watertight",
     "glass_outside_0deg",
     "glass_outside_30deg",
     "glass_outside_60deg",
@@ -216,9 +217,15 @@ TEST(SamplerGoodnessOfFit, OrenNayarMeanWeightEqualsTheQuadratureAlbedo) {
 // The hexroom's light is the quad x in [4,6], y in [-1,1] at z = 4.99, two triangles of equal
 // area: LightTable::sample must be uniform over it (2D histogram), on its plane, facing down,
 // with pdf 1/area.
+// The hexroom's light is a 2 x 2 square: one parallelogram emitter for Moller-Trumbore scenes,
+// two triangles for the watertight test. Either way the samples must be uniform over it.
 TEST(SamplerGoodnessOfFit, LightTableIsUniformOverTheHexroomLight) {
-    const Scene scene = build_scene(test::hexroom(8, 8, 1));
-    ASSERT_EQ(scene.lights.size(), 2u);
+  for (TriangleTest test : {TriangleTest::moller_trumbore, TriangleTest::watertight}) {
+    SCOPED_TRACE(name_of(test));
+    SceneDescription description = test::hexroom(8, 8, 1);
+    description.settings.accuracy.triangles = test;
+    const Scene scene = build_scene(description);
+    ASSERT_EQ(scene.lights.size(), test == TriangleTest::moller_trumbore ? 1u : 2u);
     ASSERT_NEAR(scene.lights.total_area(), 4.0f, 1e-5f);
     const int n = 256000 * kSampleScale, g = 16;
     std::vector<double> observed(std::size_t(g * g), 0.0);
@@ -237,7 +244,9 @@ TEST(SamplerGoodnessOfFit, LightTableIsUniformOverTheHexroomLight) {
         const int iy = std::min(g - 1, int((s.position.y + 1.0f) / 2.0f * g));
         observed[std::size_t(ix * g + iy)] += 1.0;
     }
-    expect_fits("hexroom_light_uniform_over_area", observed, std::vector<double>(observed.size(), double(n) / (g * g)));
+    expect_fits(std::string("hexroom_light_uniform_over_area_") + name_of(test), observed,
+                std::vector<double>(observed.size(), double(n) / (g * g)));
+  }
 }
 
 // ---- glass: reflection chosen with probability R -------------------------------------------------

@@ -1,5 +1,7 @@
 #include "core/geometry_soa.h"
 
+#include <stdexcept>
+
 #include <glm/geometric.hpp>
 #include <glm/ext/vector_double3.hpp>
 
@@ -11,7 +13,18 @@ bool is_sliver(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
     return glm::length(glm::cross(e1, e2)) <= kResolvableSine * glm::length(e1) * glm::length(e2);
 }
 
-void TriangleSoA::push_back(const glm::vec3& a, const glm::vec3& given_b, const glm::vec3& given_c, uint32_t material_id) {
+void TriangleSoA::push_back(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id) {
+    push(a, b, c, material_id);
+}
+
+void TriangleSoA::push_parallelogram(const glm::vec3& a, const glm::vec3& b, const glm::vec3& d, uint32_t material_id) {
+    if (size() != parallelogram_count) throw std::logic_error("TriangleSoA: a parallelogram pushed after a triangle");
+    // A sliver parallelogram collapses like a sliver triangle: same edges, same criterion.
+    push(a, b, d, material_id);
+    ++parallelogram_count;
+}
+
+void TriangleSoA::push(const glm::vec3& a, const glm::vec3& given_b, const glm::vec3& given_c, uint32_t material_id) {
     // Collapsed, a sliver has zero edges: det = 0 in Moller-Trumbore and every edge function is
     // 0 in the watertight test, so no kernel can report a hit on it.
     const bool sliver = is_sliver(a, given_b, given_c);

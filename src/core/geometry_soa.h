@@ -23,6 +23,13 @@ bool is_sliver(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 // the test consumes, plus the unit geometric normal for shading. The other two
 // vertices are kept as given for the watertight test: rebuilt as v0 + e1 they would round
 // differently in neighbouring triangles, and the shared edge would no longer be shared.
+//
+// The first `parallelogram_count` entries are parallelograms, not triangles: the same v0, e1,
+// e2 and normal, covering v0 + u e1 + v e2 for (u, v) in the unit square instead of the
+// triangle u + v <= 1. A rectangle is then one intersection test instead of two. Everything
+// downstream of a hit (position, error bound, normal, material) reads the same fields either
+// way; only the inside test and light sampling differ. Only the Moller-Trumbore test knows
+// parallelograms: build_scene() splits quads into triangles for the watertight test.
 struct TriangleSoA {
     AlignedVector<float> v0x, v0y, v0z;
     AlignedVector<float> v1x, v1y, v1z;
@@ -32,10 +39,15 @@ struct TriangleSoA {
     AlignedVector<float> scaled_nx, scaled_ny, scaled_nz;
     AlignedVector<float> nx, ny, nz;
     AlignedVector<uint32_t> material;
+    uint32_t parallelogram_count = 0;
 
     std::size_t size() const { return material.size(); }
+    bool is_parallelogram(std::size_t i) const { return i < parallelogram_count; }
     // A sliver (see is_sliver) is stored collapsed onto its first vertex.
     void push_back(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id);
+    // The parallelogram with corners a, b, b + d - a, d. All parallelograms come before the
+    // first triangle (std::logic_error otherwise), so kernels loop over two plain ranges.
+    void push_parallelogram(const glm::vec3& a, const glm::vec3& b, const glm::vec3& d, uint32_t material_id);
     glm::vec3 vertex0(std::size_t i) const { return {v0x[i], v0y[i], v0z[i]}; }
     glm::vec3 vertex1(std::size_t i) const { return {v1x[i], v1y[i], v1z[i]}; }
     glm::vec3 vertex2(std::size_t i) const { return {v2x[i], v2y[i], v2z[i]}; }
@@ -43,6 +55,9 @@ struct TriangleSoA {
     glm::vec3 edge2(std::size_t i) const { return {e2x[i], e2y[i], e2z[i]}; }
     glm::vec3 scaled_normal(std::size_t i) const { return {scaled_nx[i], scaled_ny[i], scaled_nz[i]}; }
     glm::vec3 normal(std::size_t i) const { return {nx[i], ny[i], nz[i]}; }
+
+private:
+    void push(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id);
 };
 
 struct SphereSoA {

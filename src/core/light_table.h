@@ -39,6 +39,7 @@ private:
     struct Emitter {
         glm::vec3 v0, e1, e2, normal, radiance;
         float cdf;  // cumulative area fraction up to and including this triangle; the last is 1
+        bool parallelogram;  // (u, v) uniform in the unit square, not folded into the triangle
     };
     std::vector<Emitter> emitters_;
     float total_area_ = 0.0f;

@@ -39,6 +39,10 @@ struct TriangleMesh {
     std::vector<glm::vec3> vertices;
     std::vector<std::array<uint32_t, 3>> triangles;
     uint32_t material = 0;  // index into SceneDescription::materials
+    // A quad [v0, v1, v2, v3] whose corner v2 is exactly v1 + v3 - v0 in float (rectangles on
+    // grid coordinates, like the hexroom's walls and light). Its triangles are (0,1,2), (0,2,3),
+    // and build_scene() may store it as one parallelogram instead: one test where two were.
+    bool parallelogram = false;
 };
 
 struct Sphere {

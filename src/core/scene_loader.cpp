@@ -509,6 +509,9 @@ TriangleMesh read_quad(const Reader& in, const Json& j, const std::string& path)
     // A planar quad whose vertices do not go around it makes a bow tie of two opposite-facing triangles.
     if (glm::dot(n0, n1) <= 0.0)
         in.fail(vpath, "quad vertices are not in order around its boundary (its two triangles face opposite ways)");
+    // In double, v1 + v3 - v0 of floats is exact (barring exponents 29 binades apart), so this
+    // asks whether the quad is a parallelogram as written, not up to rounding.
+    mesh.parallelogram = v1 + v3 - v0 == v2;
     return mesh;
 }
 

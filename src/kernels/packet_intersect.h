@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "core/accuracy.h"
 #include "kernels/intersect_kernels.h"
@@ -155,10 +156,26 @@ inline TriangleLanes<N> load_triangles(const TriangleView& t, uint32_t first, in
                 load_partial<N>(t.e2x, t.e2y, t.e2z, first, count), load_partial<N>(t.nx, t.ny, t.nz, first, count)};
 }
 
+// The two planar shapes TriangleSoA holds (parallelograms first, then triangles), as a
+// template argument so each range of the loop gets its own straight-line inside test.
+enum class Planar { parallelogram, triangle };
+template <Planar P>
+using PlanarShape = std::integral_constant<Planar, P>;
+
+// Calls f(shape, begin, end) for the parallelogram entries, then for the triangles. Only
+// Moller-Trumbore scenes have parallelograms (build_scene splits quads for the watertight test).
+template <TriangleTest T, typename F>
+inline void for_each_planar_range(const TriangleView& tri, F&& f) {
+    const uint32_t split = T == TriangleTest::moller_trumbore && tri.parallelogram_count < tri.count ? tri.parallelogram_count
+                                                                                                     : (T == TriangleTest::moller_trumbore ? tri.count : 0u);
+    f(PlanarShape<Planar::parallelogram>{}, 0u, split);
+    f(PlanarShape<Planar::triangle>{}, split, tri.count);
+}
+
 // Moller-Trumbore with the precomputed scaled normal, as intersect_triangle() in
 // primitive_intersect.h (which explains the rearrangement). A lane hits when t is in (0, tmax)
 // and the barycentrics are inside; den == 0 (parallel ray, degenerate triangle) and NaNs never hit.
-template <int N>
+template <Planar P, int N>
 inline vbool<N> intersect_triangles(const TriangleRays<TriangleTest::moller_trumbore, N>& r, const TriangleLanes<N>& tri,
                                     const vbool<N>&, const vfloat<N>& tmax, LaneHits<N>& h) {
     const Vec3<N>&v0 = tri.p0, &e1 = tri.p1, &e2 = tri.p2, &n = tri.n;
@@ -174,7 +191,12 @@ inline vbool<N> intersect_triangles(const TriangleRays<TriangleTest::moller_trum
     // tmax (the closest hit so far, carried from primitive to primitive) comes last, keeping
     // the loop-carried dependency one compare long.
     const vfloat<N> zero(0.0f);
-    const vbool<N> inside = ((h.u_num >= zero) & (h.v_num >= zero)) & ((h.u_num + h.v_num <= h.den) & (h.t > zero));
+    vbool<N> below_far_edges;
+    if constexpr (P == Planar::parallelogram)
+        below_far_edges = (h.u_num <= h.den) & (h.v_num <= h.den);
+    else
+        below_far_edges = h.u_num + h.v_num <= h.den;
+    const vbool<N> inside = ((h.u_num >= zero) & (h.v_num >= zero)) & (below_far_edges & (h.t > zero));
     return inside & (h.t < tmax);
 }
 
@@ -198,7 +220,8 @@ inline vfloat<N> edge_function(const vfloat<N>& px, const vfloat<N>& py, const v
 }
 
 // Woop, Benthin & Wald 2013, as intersect_triangle_watertight() in primitive_intersect.h.
-template <int N>
+// Triangles only (for_each_planar_range gives it an empty parallelogram range).
+template <Planar, int N>
 inline vbool<N> intersect_triangles(const TriangleRays<TriangleTest::watertight, N>& r, const TriangleLanes<N>& tri,
                                     const vbool<N>& active, const vfloat<N>& tmax, LaneHits<N>& h) {
     const Vec3<N> a = tri.p0 - r.o, b = tri.p1 - r.o, c = tri.p2 - r.o;
@@ -288,12 +311,15 @@ void closest_raypacket(const SceneView& scene, const RayView& rays, const HitVie
         // the mispredicted branch cost more than the selects it skipped (bench/README.md).
         // The primitive id rides along as a vector (one add) rather than a broadcast of i,
         // which the compiler turned into three moves.
-        for (uint32_t i = 0; i < tri.count; ++i, prim += vint<N>(1)) {
-            LaneHits<N> h;
-            const vbool<N> hit = intersect_triangles(tr, broadcast_triangle<T, N>(tri, i), r.active, best.t, h);
-            best = select(hit, h, best);
-            best_prim = simd::select(hit, prim, best_prim);
-        }
+        for_each_planar_range<T>(tri, [&](auto shape, uint32_t begin, uint32_t end) {
+            for (uint32_t i = begin; i < end; ++i, prim += vint<N>(1)) {
+                LaneHits<N> h;
+                const vbool<N> hit =
+                    intersect_triangles<shape.value>(tr, broadcast_triangle<T, N>(tri, i), r.active, best.t, h);
+                best = select(hit, h, best);
+                best_prim = simd::select(hit, prim, best_prim);
+            }
+        });
         for (uint32_t i = 0; i < sph.count; ++i) {
             vfloat<N> t;
             const vbool<N> hit = intersect_spheres<S>(r.o, r.d, broadcast<N>(sph.cx, sph.cy, sph.cz, i),
@@ -318,10 +344,12 @@ void any_raypacket(const SceneView& scene, const RayView& rays, uint8_t* occlude
         const TriangleRays<T, N> tr(r.o, r.d);
         vbool<N> blocked(false);
         const vbool<N> inactive = ~r.active;
-        for (uint32_t i = 0; i < tri.count && !simd::all(blocked | inactive); ++i) {
-            LaneHits<N> h;
-            blocked |= intersect_triangles(tr, broadcast_triangle<T, N>(tri, i), r.active, r.tmax, h);
-        }
+        for_each_planar_range<T>(tri, [&](auto shape, uint32_t begin, uint32_t end) {
+            for (uint32_t i = begin; i < end && !simd::all(blocked | inactive); ++i) {
+                LaneHits<N> h;
+                blocked |= intersect_triangles<shape.value>(tr, broadcast_triangle<T, N>(tri, i), r.active, r.tmax, h);
+            }
+        });
         for (uint32_t i = 0; i < sph.count && !simd::all(blocked | inactive); ++i) {
             vfloat<N> t;
             blocked |= intersect_spheres<S>(r.o, r.d, broadcast<N>(sph.cx, sph.cy, sph.cz, i), vfloat<N>(sph.radius[i]),
@@ -362,14 +390,17 @@ void closest_primpacket(const SceneView& scene, const RayView& rays, const HitVi
         // order, like the scalar loop); the lanes are reduced once at the end.
         LaneHits<N> best = sphere_hits(vfloat<N>(r.tmax));
         vint<N> best_prim(-1);
-        for (uint32_t first = 0; first < tri.count; first += N) {
-            const int n = lanes_left<N>(tri.count, first);
-            const vbool<N> lanes = vint<N>::step() < vint<N>(n);
-            LaneHits<N> h;
-            const vbool<N> hit = lanes & intersect_triangles(tr, load_triangles<T, N>(tri, first, n), lanes, best.t, h);
-            best = select(hit, h, best);
-            best_prim = simd::select(hit, vint<N>::step() + vint<N>(int32_t(first)), best_prim);
-        }
+        for_each_planar_range<T>(tri, [&](auto shape, uint32_t begin, uint32_t end) {
+            for (uint32_t first = begin; first < end; first += N) {
+                const int n = lanes_left<N>(end, first);
+                const vbool<N> lanes = vint<N>::step() < vint<N>(n);
+                LaneHits<N> h;
+                const vbool<N> hit =
+                    lanes & intersect_triangles<shape.value>(tr, load_triangles<T, N>(tri, first, n), lanes, best.t, h);
+                best = select(hit, h, best);
+                best_prim = simd::select(hit, vint<N>::step() + vint<N>(int32_t(first)), best_prim);
+            }
+        });
         for (uint32_t first = 0; first < sph.count; first += N) {
             const int n = lanes_left<N>(sph.count, first);
             vfloat<N> t;
@@ -408,12 +439,15 @@ void any_primpacket(const SceneView& scene, const RayView& rays, uint8_t* occlud
         const TriangleRays<T, N> tr(r.o, r.d);
         const vfloat<N> tmax(r.tmax);
         bool blocked = false;
-        for (uint32_t first = 0; first < tri.count && !blocked; first += N) {
-            const int n = lanes_left<N>(tri.count, first);
-            const vbool<N> lanes = vint<N>::step() < vint<N>(n);
-            LaneHits<N> h;
-            blocked = simd::any(lanes & intersect_triangles(tr, load_triangles<T, N>(tri, first, n), lanes, tmax, h));
-        }
+        for_each_planar_range<T>(tri, [&](auto shape, uint32_t begin, uint32_t end) {
+            for (uint32_t first = begin; first < end && !blocked; first += N) {
+                const int n = lanes_left<N>(end, first);
+                const vbool<N> lanes = vint<N>::step() < vint<N>(n);
+                LaneHits<N> h;
+                blocked = simd::any(lanes &
+                                    intersect_triangles<shape.value>(tr, load_triangles<T, N>(tri, first, n), lanes, tmax, h));
+            }
+        });
         for (uint32_t first = 0; first < sph.count && !blocked; first += N) {
             const int n = lanes_left<N>(sph.count, first);
             vfloat<N> t;

@@ -21,7 +21,8 @@ namespace wt {
 // SIMD kernels are bound by multiplications. den's sign is moved onto the numerators (exact),
 // so the inside tests compare numerators with |den| and u, v are divided out only for a hit
 // that is kept; packet_intersect.h does the same arithmetic in the same order, so every
-// kernel returns these bits.
+// kernel returns these bits. A parallelogram entry (see TriangleSoA) differs only in its
+// inside test: u <= 1 and v <= 1 instead of u + v <= 1.
 inline bool intersect_triangle(const TriangleSoA& tris, uint32_t i, const Ray& ray, Hit& hit) {
     const glm::vec3 n = tris.scaled_normal(i);
     const float den = glm::dot(ray.direction, n);
@@ -32,7 +33,8 @@ inline bool intersect_triangle(const TriangleSoA& tris, uint32_t i, const Ray& r
     const glm::vec3 r = glm::cross(c, ray.direction);
     const float u_num = flip ? -glm::dot(tris.edge2(i), r) : glm::dot(tris.edge2(i), r);
     const float v_num = -(flip ? -glm::dot(tris.edge1(i), r) : glm::dot(tris.edge1(i), r));
-    if (!(u_num >= 0.0f && v_num >= 0.0f && u_num + v_num <= abs_den)) return false;
+    const bool below_far_edges = tris.is_parallelogram(i) ? u_num <= abs_den && v_num <= abs_den : u_num + v_num <= abs_den;
+    if (!(u_num >= 0.0f && v_num >= 0.0f && below_far_edges)) return false;
     const float t = glm::dot(c, n) / den;
     if (!(t > 0.0f && t < hit.t)) return false;
     hit.t = t;
@@ -46,7 +48,8 @@ inline bool intersect_triangle(const TriangleSoA& tris, uint32_t i, const Ray& r
 // (JCGT 2013). The ray is sheared so it points along +z from the origin; the test is then 2D
 // edge functions of the translated vertices, evaluated identically for the two triangles that
 // share an edge, so a ray on the edge hits at least one of them. An edge function that comes
-// out exactly 0 is recomputed in double: in float its sign is not trustworthy.
+// out exactly 0 is recomputed in double: in float its sign is not trustworthy. Triangles only:
+// a scene built for this test has no parallelograms (build_scene splits its quads).
 struct WatertightRay {
     int kx, ky, kz;        // axis permutation: kz is the dominant direction axis
     float sx, sy, sz;      // shear constants

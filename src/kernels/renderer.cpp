@@ -29,6 +29,10 @@ RenderResult render(const Scene& scene, const RenderOptions& options, Film& film
     // Created by the worker that uses it, on first use, so its pages live near that core.
     std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces(static_cast<std::size_t>(threads));
 
+    if (scene.settings.accuracy.triangles == TriangleTest::watertight && scene.triangles.parallelogram_count > 0)
+        throw std::invalid_argument("render: the watertight triangle test cannot render parallelograms; build the scene "
+                                    "with the accuracy settings it is rendered with");
+
     const Isa isa = options.isa.value_or(best_supported_isa());
     const IntersectContext context{scene_view(scene), &intersect_kernels(isa, scene.settings.accuracy)};
 

@@ -16,6 +16,7 @@ struct TriangleView {
     const float *v1x, *v1y, *v1z;  // the watertight test reads the vertices
     const float *v2x, *v2y, *v2z;
     uint32_t count;
+    uint32_t parallelogram_count;  // entries [0, parallelogram_count) are parallelograms (Moller-Trumbore only)
 };
 
 struct SphereView {
