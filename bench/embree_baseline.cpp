@@ -17,6 +17,7 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // Attached with these ids, so a hit's geomID says which of our index ranges its primID is in.
 constexpr unsigned kTriangleGeometry = 0;
 constexpr unsigned kSphereGeometry = 1;
+constexpr unsigned kQuadGeometry = 2;
 
 void throw_on_device_error(RTCDevice device, const char* what) {
     const RTCError error = rtcGetDeviceError(device);
@@ -76,11 +77,13 @@ void load_packet(const RayView& rays, uint32_t first, int lanes, PacketRay& pack
 struct EmbreeBaseline::Impl {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
-    uint32_t triangle_count = 0;
+    uint32_t triangle_count = 0;       // all planar entries, parallelograms included
+    uint32_t parallelogram_count = 0;  // the first entries; Embree's quads
 
     uint32_t our_prim(unsigned geom_id, unsigned prim_id) const {
         if (geom_id == RTC_INVALID_GEOMETRY_ID) return kNoHit;
-        return geom_id == kTriangleGeometry ? prim_id : triangle_count + prim_id;
+        if (geom_id == kQuadGeometry) return prim_id;
+        return geom_id == kTriangleGeometry ? parallelogram_count + prim_id : triangle_count + prim_id;
     }
 
     template <int N>
@@ -126,22 +129,43 @@ EmbreeBaseline::EmbreeBaseline(const Scene& scene) : impl_(std::make_unique<Impl
     impl_->scene = rtcNewScene(impl_->device);
     impl_->triangle_count = uint32_t(scene.triangles.size());
 
-    // One Embree quad per entry, so primID is our id: a parallelogram is the quad v0, v0 + e1,
-    // v0 + e1 + e2, v0 + e2, and a triangle the quad with its last vertex repeated (Embree's
-    // documented encoding of a triangle in a quad mesh).
+    // Each planar entry as Embree's own primitive for it: parallelograms as quads v0, v0 + e1,
+    // v0 + e1 + e2, v0 + e2 (exact for the hexroom's integer corners), triangles as
+    // v0, v0 + e1, v0 + e2, rebuilt from the SoA buffers our kernels read.
     const TriangleSoA& t = scene.triangles;
-    RTCGeometry triangles = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_QUAD);
+    impl_->parallelogram_count = t.parallelogram_count;
+    if (t.parallelogram_count > 0) {
+        RTCGeometry quads = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_QUAD);
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(quads, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                     3 * sizeof(float), 4 * t.parallelogram_count));
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(quads, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
+                                                                       4 * sizeof(unsigned), t.parallelogram_count));
+        for (std::size_t i = 0; i < t.parallelogram_count; ++i) {
+            const glm::vec3 corners[4] = {t.vertex0(i), t.vertex0(i) + t.edge1(i), t.vertex0(i) + t.edge1(i) + t.edge2(i),
+                                          t.vertex0(i) + t.edge2(i)};
+            for (int c = 0; c < 4; ++c) {
+                float* v = vertices + 3 * (4 * i + std::size_t(c));
+                v[0] = corners[c].x, v[1] = corners[c].y, v[2] = corners[c].z;
+                indices[4 * i + std::size_t(c)] = unsigned(4 * i + std::size_t(c));
+            }
+        }
+        rtcCommitGeometry(quads);
+        rtcAttachGeometryByID(impl_->scene, quads, kQuadGeometry);
+        rtcReleaseGeometry(quads);
+    }
+    const std::size_t triangle_count = t.size() - t.parallelogram_count;
+    RTCGeometry triangles = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(
-        rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * t.size()));
+        rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * triangle_count));
     auto* indices = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), t.size()));
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        const glm::vec3 v0 = t.vertex0(i), v1 = v0 + t.edge1(i), v3 = v0 + t.edge2(i);
-        const glm::vec3 corners[4] = {v0, v1, t.is_parallelogram(i) ? v0 + t.edge1(i) + t.edge2(i) : v3, v3};
-        for (int c = 0; c < 4; ++c) {
-            float* v = vertices + 3 * (4 * i + std::size_t(c));
+        rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangle_count));
+    for (std::size_t k = 0; k < triangle_count; ++k) {
+        const std::size_t i = t.parallelogram_count + k;
+        const glm::vec3 corners[3] = {t.vertex0(i), t.vertex0(i) + t.edge1(i), t.vertex0(i) + t.edge2(i)};
+        for (int c = 0; c < 3; ++c) {
+            float* v = vertices + 3 * (3 * k + std::size_t(c));
             v[0] = corners[c].x, v[1] = corners[c].y, v[2] = corners[c].z;
-            indices[4 * i + std::size_t(c)] = unsigned(4 * i + std::size_t(c));
+            indices[3 * k + std::size_t(c)] = unsigned(3 * k + std::size_t(c));
         }
     }
     rtcCommitGeometry(triangles);
