@@ -31,6 +31,30 @@ RTCIntersectContext context_for(bool coherent) {
     return context;
 }
 
+// A planar geometry of `count` primitives with K unshared corners each (3: Embree triangles,
+// 4: Embree quads), corners_of(k, corners) giving primitive k's, attached to `scene` as `id`.
+template <int K, typename CornersOf>
+void attach_planar(RTCDevice device, RTCScene scene, unsigned id, std::size_t count, CornersOf corners_of) {
+    static_assert(K == 3 || K == 4);
+    RTCGeometry g = rtcNewGeometry(device, K == 4 ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), K * count));
+    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, 0, K == 4 ? RTC_FORMAT_UINT4 : RTC_FORMAT_UINT3, K * sizeof(unsigned), count));
+    for (std::size_t k = 0; k < count; ++k) {
+        glm::vec3 corners[K];
+        corners_of(k, corners);
+        for (std::size_t c = 0; c < std::size_t(K); ++c) {
+            const std::size_t at = K * k + c;
+            vertices[3 * at] = corners[c].x, vertices[3 * at + 1] = corners[c].y, vertices[3 * at + 2] = corners[c].z;
+            indices[at] = unsigned(at);
+        }
+    }
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(scene, g, id);
+    rtcReleaseGeometry(g);
+}
+
 float max_distance(const RayView& rays, uint32_t i) { return rays.tmax ? rays.tmax[i] : kInfinity; }
 
 // One packet type's entry points, so closest and any hit are written once for 8 and 16 lanes.
@@ -135,42 +159,15 @@ EmbreeBaseline::EmbreeBaseline(const Scene& scene) : impl_(std::make_unique<Impl
     const TriangleSoA& t = scene.triangles;
     impl_->parallelogram_count = t.parallelogram_count;
     if (t.parallelogram_count > 0) {
-        RTCGeometry quads = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_QUAD);
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(quads, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                     3 * sizeof(float), 4 * t.parallelogram_count));
-        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(quads, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
-                                                                       4 * sizeof(unsigned), t.parallelogram_count));
-        for (std::size_t i = 0; i < t.parallelogram_count; ++i) {
-            const glm::vec3 corners[4] = {t.vertex0(i), t.vertex0(i) + t.edge1(i), t.vertex0(i) + t.edge1(i) + t.edge2(i),
-                                          t.vertex0(i) + t.edge2(i)};
-            for (int c = 0; c < 4; ++c) {
-                float* v = vertices + 3 * (4 * i + std::size_t(c));
-                v[0] = corners[c].x, v[1] = corners[c].y, v[2] = corners[c].z;
-                indices[4 * i + std::size_t(c)] = unsigned(4 * i + std::size_t(c));
-            }
-        }
-        rtcCommitGeometry(quads);
-        rtcAttachGeometryByID(impl_->scene, quads, kQuadGeometry);
-        rtcReleaseGeometry(quads);
+        attach_planar<4>(impl_->device, impl_->scene, kQuadGeometry, t.parallelogram_count, [&](std::size_t i, glm::vec3* c) {
+            c[0] = t.vertex0(i), c[1] = c[0] + t.edge1(i), c[2] = c[1] + t.edge2(i), c[3] = c[0] + t.edge2(i);
+        });
     }
-    const std::size_t triangle_count = t.size() - t.parallelogram_count;
-    RTCGeometry triangles = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(
-        rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * triangle_count));
-    auto* indices = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangle_count));
-    for (std::size_t k = 0; k < triangle_count; ++k) {
-        const std::size_t i = t.parallelogram_count + k;
-        const glm::vec3 corners[3] = {t.vertex0(i), t.vertex0(i) + t.edge1(i), t.vertex0(i) + t.edge2(i)};
-        for (int c = 0; c < 3; ++c) {
-            float* v = vertices + 3 * (3 * k + std::size_t(c));
-            v[0] = corners[c].x, v[1] = corners[c].y, v[2] = corners[c].z;
-            indices[3 * k + std::size_t(c)] = unsigned(3 * k + std::size_t(c));
-        }
-    }
-    rtcCommitGeometry(triangles);
-    rtcAttachGeometryByID(impl_->scene, triangles, kTriangleGeometry);
-    rtcReleaseGeometry(triangles);
+    attach_planar<3>(impl_->device, impl_->scene, kTriangleGeometry, t.size() - t.parallelogram_count,
+                     [&](std::size_t k, glm::vec3* c) {
+                         const std::size_t i = t.parallelogram_count + k;
+                         c[0] = t.vertex0(i), c[1] = c[0] + t.edge1(i), c[2] = c[0] + t.edge2(i);
+                     });
 
     const SphereSoA& s = scene.spheres;
     if (s.size() > 0) {
