@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -499,6 +500,64 @@ TEST(DegenerateTriangles, TiltedNeedlesGiveNoFalseHitWithTheWatertightOption) {
 
 // Every zero component of the direction as -0 instead of +0 must not change anything: same
 // primitive, same t, u and v (as numbers), same any-hit answer.
+// ---- parallelograms: edges, corners and the diagonal a triangle pair would have -------------
+
+// Two skewed parallelograms sharing an edge, hit through their corners, their edge points, one
+// float step inside and outside their far edges and the diagonal where a triangle split would
+// put its seam, and by rays parallel to their plane. Every implementation must give the scalar
+// functions' bits, a parallelogram's (u, v) stays in the unit square, and a ray aimed well
+// inside (or well outside) must hit (or miss).
+TEST(ParallelogramExtremes, EdgesCornersAndTheDiagonalOnEveryImplementation) {
+    const glm::vec3 v0(0.1f, 0.2f, 0.3f), e1(1.3f, 0.2f, -0.1f), e2(-0.2f, 0.9f, 0.4f);
+    Scene scene = scene_of({}, {});
+    scene.triangles.push_parallelogram(v0, v0 + e1, v0 + e2, 0);
+    scene.triangles.push_parallelogram(v0 + e1, v0 + e1 + e1, v0 + e1 + e2, 0);  // shares the edge v0 + e1 .. + e2
+    const glm::vec3 normal = glm::normalize(glm::cross(e1, e2));
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+    std::vector<Query> queries;
+    std::vector<int> expect;  // 1: must hit, 0: must miss, -1: either (on or within a step of a boundary)
+    const float below = std::nextafter(1.0f, 0.0f), above = std::nextafter(1.0f, 2.0f);
+    const float params[] = {0.0f, 0.5f, 1.0f, below, above, -0x1p-24f, 0x1p-24f, 0.25f, 0.75f};
+    for (float a : params) {
+        for (float b : params) {
+            for (float s : {0.0f, 1.0f}) {  // the first parallelogram, or the second one along e1
+                const glm::vec3 target = v0 + (a + s) * e1 + b * e2;
+                const bool inside_far = a > 0.01f && a < 0.99f && b > 0.01f && b < 0.99f;
+                for (int k = 0; k < 6; ++k) {
+                    glm::vec3 d = random_unit(rng);
+                    if (std::fabs(glm::dot(d, normal)) < 0.05f) d = glm::normalize(d + normal);
+                    queries.push_back({{target - (0.5f + 3.0f * u01(rng)) * d, d}});
+                    expect.push_back(inside_far ? 1 : -1);
+                }
+            }
+        }
+    }
+    // Clearly outside both, and parallel to the plane through the middle.
+    for (int k = 0; k < 200; ++k) {
+        const glm::vec3 d = random_unit(rng);
+        if (std::fabs(glm::dot(d, normal)) < 0.05f) continue;
+        const glm::vec3 target = v0 + (u01(rng) < 0.5f ? -0.2f - u01(rng) : 2.2f + u01(rng)) * e1 + (u01(rng) * 3.0f - 1.0f) * e2;
+        queries.push_back({{target - 2.0f * d, d}});
+        expect.push_back(0);
+    }
+    const glm::vec3 in_plane = glm::normalize(e1 - glm::dot(e1, normal) * normal);
+    queries.push_back({{v0 + 0.5f * e2 - in_plane, in_plane}});
+    expect.push_back(-1);  // exactly parallel only up to rounding of the normal: either, if sane
+
+    std::vector<Answer> scalar;
+    for (const Query& q : queries) scalar.push_back(scalar_answer(scene, q));
+    auto same_bits = [](float x, float y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+    expect_everywhere(scene, queries, [&](std::size_t i, const Query&, const Answer& a) -> std::string {
+        const Answer& s = scalar[i];
+        if (a.prim != s.prim || !same_bits(a.t, s.t) || (a.found() && (!same_bits(a.u, s.u) || !same_bits(a.v, s.v))))
+            return "differs from the scalar functions: " + describe(s);
+        if (expect[i] == 1 && !a.found()) return "missed a point well inside";
+        if (expect[i] == 0 && a.found()) return "hit a point well outside";
+        return "";
+    });
+}
+
 TEST(SignedZeroDirections, NegativeZeroBehavesLikePositiveZero) {
     const Scene hexroom = build_scene(test::hexroom(8, 8, 1));
     const Scene triangle = scene_of({{glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)}}, {{glm::vec3(0, 0, 3), 0.5f}});
@@ -807,9 +866,14 @@ void expect_spawned_rays_leave(const Scene& scene, uint32_t prim, int hit_count,
     Scene single;
     single.settings = scene.settings;
     const bool is_triangle = prim < scene.triangles.size();
+    const bool is_parallelogram = scene.triangles.is_parallelogram(prim);
     if (is_triangle) {
-        single.triangles.push_back(scene.triangles.vertex0(prim), scene.triangles.vertex0(prim) + scene.triangles.edge1(prim),
-                                   scene.triangles.vertex0(prim) + scene.triangles.edge2(prim), 0);
+        const glm::vec3 v0 = scene.triangles.vertex0(prim), v1 = v0 + scene.triangles.edge1(prim),
+                        v2 = v0 + scene.triangles.edge2(prim);
+        if (is_parallelogram)
+            single.triangles.push_parallelogram(v0, v1, v2, 0);
+        else
+            single.triangles.push_back(v0, v1, v2, 0);
     } else {
         const uint32_t s = prim - uint32_t(scene.triangles.size());
         single.spheres.push_back(scene.spheres.center(s), scene.spheres.radius[s], 0);
@@ -833,7 +897,7 @@ void expect_spawned_rays_leave(const Scene& scene, uint32_t prim, int hit_count,
         const glm::vec3 d = random_unit(rng);
         Ray incoming;
         if (is_triangle) {
-            const glm::vec2 b = sample_uniform_triangle(u01(rng), u01(rng));
+            const glm::vec2 b = is_parallelogram ? glm::vec2(u01(rng), u01(rng)) : sample_uniform_triangle(u01(rng), u01(rng));
             const glm::vec3 p = single.triangles.vertex0(0) + b.x * single.triangles.edge1(0) + b.y * single.triangles.edge2(0);
             if (std::fabs(glm::dot(d, single.triangles.normal(0))) < 1e-4f) continue;
             incoming = {p - (0.01f + 20.0f * u01(rng)) * d, d};
