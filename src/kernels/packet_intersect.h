@@ -166,8 +166,8 @@ using PlanarShape = std::integral_constant<Planar, P>;
 // Moller-Trumbore scenes have parallelograms (build_scene splits quads for the watertight test).
 template <TriangleTest T, typename F>
 inline void for_each_planar_range(const TriangleView& tri, F&& f) {
-    const uint32_t split = T == TriangleTest::moller_trumbore && tri.parallelogram_count < tri.count ? tri.parallelogram_count
-                                                                                                     : (T == TriangleTest::moller_trumbore ? tri.count : 0u);
+    const uint32_t parallelograms = T == TriangleTest::moller_trumbore ? tri.parallelogram_count : 0u;
+    const uint32_t split = parallelograms < tri.count ? parallelograms : tri.count;  // a view cut short stays in bounds
     f(PlanarShape<Planar::parallelogram>{}, 0u, split);
     f(PlanarShape<Planar::triangle>{}, split, tri.count);
 }
@@ -187,16 +187,17 @@ inline vbool<N> intersect_triangles(const TriangleRays<TriangleTest::moller_trum
     h.v_num = -simd::flip_sign(dot(e1, cr), den);
     h.t = dot(c, n) / den;  // the same bits as flip_sign(c.n, den) / |den|: IEEE division is sign-symmetric
     // No den != 0 test: with den = 0, t is +-inf or NaN and fails 0 < t < tmax anyway. The
-    // tests are paired, not chained, so their masks combine in a shallow tree; the test against
-    // tmax (the closest hit so far, carried from primitive to primitive) comes last, keeping
-    // the loop-carried dependency one compare long.
+    // test against tmax (in the closest-hit loop, the closest hit so far, carried from
+    // primitive to primitive) is and-ed in last: GCC turns the and-ed compares into a chain of
+    // masked compares, and with tmax first the loop-carried dependency ran through all of them
+    // (moving it last gained about 15 % on AVX-512 incoherent closest hits, interleaved runs).
     const vfloat<N> zero(0.0f);
     vbool<N> below_far_edges;
     if constexpr (P == Planar::parallelogram)
         below_far_edges = (h.u_num <= h.den) & (h.v_num <= h.den);
     else
         below_far_edges = h.u_num + h.v_num <= h.den;
-    const vbool<N> inside = ((h.u_num >= zero) & (h.v_num >= zero)) & (below_far_edges & (h.t > zero));
+    const vbool<N> inside = (h.u_num >= zero) & (h.v_num >= zero) & below_far_edges & (h.t > zero);
     return inside & (h.t < tmax);
 }
 
