@@ -9,6 +9,8 @@
 #include <glm/vec3.hpp>
 
 #include "core/geometry_soa.h"
+#include "core/ray_offset.h"
+#include "core/sampling.h"
 #include "core/scene_description.h"
 
 namespace wt {
@@ -32,6 +34,7 @@ public:
 
     // u_choice picks the triangle, (u0, u1) the point on it. (The triangles argument is the
     // scene's; the table keeps its own copy of what sampling reads, in one cache line per light.)
+    // Inline: it runs once per shadow ray, and a call returning this struct cost a third of it.
     LightSample sample(const TriangleSoA& triangles, float u_choice, float u0, float u1) const;
 
 private:
@@ -42,6 +45,22 @@ private:
     };
     std::vector<Emitter> emitters_;
     float total_area_ = 0.0f;
+    float pdf_area_ = 0.0f;  // 1 / total_area_, divided once here rather than per sample
 };
+
+inline LightSample LightTable::sample(const TriangleSoA&, float u_choice, float u0, float u1) const {
+    // A linear scan: scenes have a handful of emitters, and it is branch-predictable.
+    std::size_t k = 0;
+    while (k + 1 < emitters_.size() && !(u_choice < emitters_[k].cdf)) ++k;
+    const Emitter& e = emitters_[k];
+    const glm::vec2 b = sample_uniform_triangle(u0, u1);
+    LightSample s;
+    s.position = e.v0 + b.x * e.e1 + b.y * e.e2;
+    s.error = triangle_point_error(e.v0, e.e1, e.e2, b.x, b.y);
+    s.normal = e.normal;
+    s.radiance = e.radiance;
+    s.pdf_area = pdf_area_;
+    return s;
+}
 
 }  // namespace wt

@@ -54,38 +54,67 @@ inline LightSamplingPoint light_sampling_point(const SurfacePoint& surface, cons
     return {n, offset_ray_origin(surface.position, surface.error, n)};
 }
 
-// Light sample `index` of `count` at a diffuse vertex (next-event estimation). The estimate is
-// f * Le * cos_x * cos_y / (dist^2 * pdf_area), averaged over the `count` shadow rays. Empty when
-// the sample cannot contribute (light seen from behind, point below the surface), so no ray is
-// traced for it.
+// The light samples of one diffuse vertex (next-event estimation). Sample `index` of `count`
+// estimates f * Le * cos_x * cos_y / (dist^2 * pdf_area), averaged over the `count` shadow rays.
+// What the samples share (the ray origin, the BSDF's view-dependent part, where the vertex's
+// random numbers start) is computed once, in the constructor, not once per shadow ray.
+class DirectLightSampler {
+public:
+    DirectLightSampler(const Scene& scene, const Material& m, const SurfacePoint& surface, const LightSamplingPoint& at,
+                       const glm::vec3& d, const glm::vec3& throughput, uint64_t key, uint32_t bounce, uint32_t count)
+        : scene_(scene),
+          at_(at),
+          position_(surface.position),
+          throughput_(throughput),
+          bsdf_(m, at.normal, -d),
+          random_(key, bounce),
+          count_(float(count)) {}
+
+    // Empty when the sample cannot contribute (light seen from behind, point below the surface),
+    // so no ray is traced for it.
+    std::optional<ShadowRay> sample(uint32_t index) const {
+        const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
+        const LightSample light = scene_.lights.sample(scene_.triangles, random_(base), random_(base + 1), random_(base + 2));
+        const glm::vec3& n = at_.normal;
+        const glm::vec3 to_light = light.position - position_;
+        const float dist2 = glm::dot(to_light, to_light);
+        if (!(dist2 > 0.0f)) return std::nullopt;
+        const float dist = std::sqrt(dist2);
+        const glm::vec3 wi = to_light / dist;
+        const float cos_x = glm::dot(n, wi);
+        const float cos_y = -glm::dot(light.normal, wi);
+        if (cos_x <= 0.0f || cos_y <= 0.0f) return std::nullopt;
+
+        const glm::vec3 f = bsdf_(wi, cos_x);
+        const float geometry = cos_x * cos_y / (dist2 * light.pdf_area * count_);
+        ShadowRay s;
+        s.ray.origin = at_.ray_origin;
+        // Both ends are moved off their surfaces, so neither the shading point's nor the light's
+        // own triangle can block the ray.
+        const glm::vec3 target = offset_ray_origin(light.position, light.error, light.normal);
+        const glm::vec3 span = target - s.ray.origin;
+        s.tmax = glm::length(span);
+        s.ray.direction = span / s.tmax;
+        s.contribution = throughput_ * f * light.radiance * geometry;
+        return s;
+    }
+
+private:
+    const Scene& scene_;
+    LightSamplingPoint at_;
+    glm::vec3 position_;  // the shading point, before the offset
+    glm::vec3 throughput_;
+    DiffuseBsdfAtView bsdf_;
+    VertexRandom random_;
+    float count_;
+};
+
+// Light sample `index` of `count` at a diffuse vertex, alone (the integrators build one
+// DirectLightSampler per vertex instead).
 inline std::optional<ShadowRay> sample_light(const Scene& scene, const Material& m, const SurfacePoint& surface,
                                              const LightSamplingPoint& at, const glm::vec3& d, const glm::vec3& throughput, uint64_t key,
                                              uint32_t bounce, uint32_t index, uint32_t count) {
-    const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
-    const LightSample light = scene.lights.sample(scene.triangles, random_float(key, bounce, base),
-                                                  random_float(key, bounce, base + 1), random_float(key, bounce, base + 2));
-    const glm::vec3& n = at.normal;
-    const glm::vec3 to_light = light.position - surface.position;
-    const float dist2 = glm::dot(to_light, to_light);
-    if (!(dist2 > 0.0f)) return std::nullopt;
-    const float dist = std::sqrt(dist2);
-    const glm::vec3 wi = to_light / dist;
-    const float cos_x = glm::dot(n, wi);
-    const float cos_y = -glm::dot(light.normal, wi);
-    if (cos_x <= 0.0f || cos_y <= 0.0f) return std::nullopt;
-
-    const glm::vec3 f = eval_diffuse_bsdf(m, n, -d, wi);
-    const float geometry = cos_x * cos_y / (dist2 * light.pdf_area * float(count));
-    ShadowRay s;
-    s.ray.origin = at.ray_origin;
-    // Both ends are moved off their surfaces, so neither the shading point's nor the light's
-    // own triangle can block the ray.
-    const glm::vec3 target = offset_ray_origin(light.position, light.error, light.normal);
-    const glm::vec3 span = target - s.ray.origin;
-    s.tmax = glm::length(span);
-    s.ray.direction = span / s.tmax;
-    s.contribution = throughput * f * light.radiance * geometry;
-    return s;
+    return DirectLightSampler(scene, m, surface, at, d, throughput, key, bounce, count).sample(index);
 }
 
 struct PathContinuation {
@@ -100,8 +129,8 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
                                                      const glm::vec3& d, const glm::vec3& throughput, uint64_t key,
                                                      uint32_t bounce) {
     if (int(bounce) + 1 >= scene.settings.max_bounces) return std::nullopt;
-    const BsdfSample s = sample_bsdf(m, surface.normal, d, random_float(key, bounce, dim::bsdf_u),
-                                     random_float(key, bounce, dim::bsdf_v), random_float(key, bounce, dim::bsdf_choice),
+    const VertexRandom random(key, bounce);
+    const BsdfSample s = sample_bsdf(m, surface.normal, d, random(dim::bsdf_u), random(dim::bsdf_v), random(dim::bsdf_choice),
                                      scene.settings.accuracy.fresnel);
     if (!s.valid) return std::nullopt;
     PathContinuation next;
@@ -114,7 +143,7 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
         // Survival proportional to throughput keeps the estimator unbiased (weight / q) while
         // ending dim paths early; the cap keeps even bright paths terminating.
         const float q = std::fmin(0.95f, std::fmax(next.throughput.x, std::fmax(next.throughput.y, next.throughput.z)));
-        if (!(random_float(key, bounce, dim::roulette) < q)) return std::nullopt;
+        if (!(random(dim::roulette) < q)) return std::nullopt;
         next.throughput /= q;
     }
     const glm::vec3 side = glm::dot(s.direction, surface.normal) > 0.0f ? surface.normal : -surface.normal;

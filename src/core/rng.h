@@ -33,10 +33,21 @@ constexpr uint32_t light_first = 6;   // then 3 per shadow ray: light choice, u,
 constexpr uint32_t per_shadow_ray = 3;
 }  // namespace dim
 
-// Uniform in [0, 1): the top 24 bits, so every value is exactly representable and 1 is never hit.
-inline float random_float(uint64_t key, uint32_t bounce, uint32_t dimension) {
-    const uint64_t counter = (uint64_t(bounce) << 32) | dimension;
-    return float(mix64(key + counter * 0x9e3779b97f4a7c15ULL) >> 40) * 0x1p-24f;
-}
+// The counter (bounce << 32 | dimension) is spread over 64 bits by the golden ratio (Weyl
+// sequence) before mixing, as splitmix64 does with its state.
+constexpr uint64_t kGoldenGamma = 0x9e3779b97f4a7c15ULL;
+
+// The random numbers of one path vertex. The counter's bounce part is multiplied in once per
+// vertex: key + (bounce << 32 | d) * gamma == (key + (bounce << 32) * gamma) + d * gamma
+// modulo 2^64, so vertex_random(key, bounce)(d) is random_float(key, bounce, d), bit for bit.
+struct VertexRandom {
+    uint64_t base;
+
+    VertexRandom(uint64_t key, uint32_t bounce) : base(key + (uint64_t(bounce) << 32) * kGoldenGamma) {}
+    // Uniform in [0, 1): the top 24 bits, so every value is exactly representable and 1 is never hit.
+    float operator()(uint32_t dimension) const { return float(mix64(base + uint64_t(dimension) * kGoldenGamma) >> 40) * 0x1p-24f; }
+};
+
+inline float random_float(uint64_t key, uint32_t bounce, uint32_t dimension) { return VertexRandom(key, bounce)(dimension); }
 
 }  // namespace wt

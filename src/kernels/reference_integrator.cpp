@@ -28,9 +28,10 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
             radiance += vertex.emission_added;
         }
         if (!scene.lights.empty() && gathers_direct_light(m)) {
-            const LightSamplingPoint at = light_sampling_point(surface, ray.direction);
+            const DirectLightSampler lights(scene, m, surface, light_sampling_point(surface, ray.direction), ray.direction,
+                                            throughput, key, bounce, shadow_ray_count);
             for (uint32_t j = 0; j < shadow_ray_count; ++j) {
-                const auto shadow = sample_light(scene, m, surface, at, ray.direction, throughput, key, bounce, j, shadow_ray_count);
+                const auto shadow = lights.sample(j);
                 if (!shadow) continue;
                 ++counts.shadow_rays;
                 ++vertex.shadow_rays_traced;

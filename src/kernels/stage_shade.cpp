@@ -23,9 +23,10 @@ void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
 
         if (rays.count_emission[i]) paths.add_radiance(slot, throughput * emitted_towards(m, surface.normal, ray.direction));
         if (has_lights && gathers_direct_light(m)) {
-            const LightSamplingPoint at = light_sampling_point(surface, ray.direction);
+            const DirectLightSampler lights(scene, m, surface, light_sampling_point(surface, ray.direction), ray.direction,
+                                            throughput, key, bounce, shadow_ray_count);
             for (uint32_t j = 0; j < shadow_ray_count; ++j) {
-                const auto shadow = sample_light(scene, m, surface, at, ray.direction, throughput, key, bounce, j, shadow_ray_count);
+                const auto shadow = lights.sample(j);
                 if (shadow) shadows.push(*shadow, slot);
             }
         }
