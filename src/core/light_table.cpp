@@ -2,6 +2,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/ray_offset.h"
+
 namespace wt {
 
 LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>& materials) {
@@ -14,7 +16,8 @@ LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>
         if (area <= 0.0) continue;  // the loader rejects degenerate lights; built-in scenes may not
         running_area += area;
         cumulative.push_back(running_area);
-        emitters_.push_back({triangles.vertex0(i), triangles.edge1(i), triangles.edge2(i), triangles.normal(i), m.emission, 0.0f});
+        const glm::vec3 v0 = triangles.vertex0(i), e1 = triangles.edge1(i), e2 = triangles.edge2(i);
+        emitters_.push_back({v0, e1, e2, triangles.normal(i), m.emission, 0.0f, magnitude(v0), magnitude(e1), magnitude(e2)});
     }
     total_area_ = float(running_area);
     pdf_area_ = 1.0f / total_area_;

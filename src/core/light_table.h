@@ -42,6 +42,7 @@ private:
     struct Emitter {
         glm::vec3 v0, e1, e2, normal, radiance;
         float cdf;  // cumulative area fraction up to and including this triangle; the last is 1
+        glm::vec3 abs_v0, abs_e1, abs_e2;  // for the sample's error bound, taken once here
     };
     std::vector<Emitter> emitters_;
     float total_area_ = 0.0f;
@@ -56,7 +57,7 @@ inline LightSample LightTable::sample(const TriangleSoA&, float u_choice, float 
     const glm::vec2 b = sample_uniform_triangle(u0, u1);
     LightSample s;
     s.position = e.v0 + b.x * e.e1 + b.y * e.e2;
-    s.error = triangle_point_error(e.v0, e.e1, e.e2, b.x, b.y);
+    s.error = triangle_point_error_from_magnitudes(e.abs_v0, e.abs_e1, e.abs_e2, b.x, b.y);
     s.normal = e.normal;
     s.radiance = e.radiance;
     s.pdf_area = pdf_area_;

@@ -30,15 +30,15 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
         if (!scene.lights.empty() && gathers_direct_light(m)) {
             const DirectLightSampler lights(scene, m, surface, light_sampling_point(surface, ray.direction), ray.direction,
                                             throughput, key, bounce, shadow_ray_count);
+            ShadowRay shadow;
             for (uint32_t j = 0; j < shadow_ray_count; ++j) {
-                const auto shadow = lights.sample(j);
-                if (!shadow) continue;
+                if (!lights.sample(j, shadow)) continue;
                 ++counts.shadow_rays;
                 ++vertex.shadow_rays_traced;
-                if (intersect_any(scene, shadow->ray, shadow->tmax)) continue;
+                if (intersect_any(scene, shadow.ray, shadow.tmax)) continue;
                 ++vertex.shadow_rays_unoccluded;
-                vertex.direct_added += shadow->contribution;
-                radiance += shadow->contribution;
+                vertex.direct_added += shadow.contribution;
+                radiance += shadow.contribution;
             }
         }
         if (record) record->push_back(vertex);
