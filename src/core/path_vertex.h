@@ -68,12 +68,25 @@ public:
           throughput_(throughput),
           bsdf_(m, at.normal, -d),
           random_(key, bounce),
-          count_(float(count)) {}
+          count_(count),
+          count_float_(float(count)) {}
+
+    // Every light sample of the vertex, in index order; emit(const ShadowRay&) gets each one that
+    // can contribute. One loop here rather than one call per sample in the caller: the shared
+    // state stays in registers across the samples.
+    template <typename Emit>
+    void sample_all(Emit&& emit) const {
+        ShadowRay s;
+        for (uint32_t j = 0; j < count_; ++j)
+            if (sample(j, s)) emit(s);
+    }
 
     // Writes light sample `index` to `s`; false, leaving `s` unspecified, when the sample cannot
     // contribute (light seen from behind, point below the surface), so no ray is traced for it.
     // (An out-parameter, not std::optional: the 40-byte copy out of it was 4 % of the sample.)
-    bool sample(uint32_t index, ShadowRay& s) const {
+    // Always inlined: g++ judges it too big, and as a call it spills and reloads the shared
+    // state around every sample.
+    [[gnu::always_inline]] bool sample(uint32_t index, ShadowRay& s) const {
         const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
         const LightSample light = scene_.lights.sample(scene_.triangles, random_(base), random_(base + 1), random_(base + 2));
         const glm::vec3& n = at_.normal;
@@ -87,7 +100,7 @@ public:
         if (cos_x <= 0.0f || cos_y <= 0.0f) return false;
 
         const glm::vec3 f = bsdf_(wi, cos_x);
-        const float geometry = cos_x * cos_y / (dist2 * light.pdf_area * count_);
+        const float geometry = cos_x * cos_y / (dist2 * light.pdf_area * count_float_);
         s.ray.origin = at_.ray_origin;
         // Both ends are moved off their surfaces, so neither the shading point's nor the light's
         // own triangle can block the ray.
@@ -106,7 +119,8 @@ private:
     glm::vec3 throughput_;
     DiffuseBsdfAtView bsdf_;
     VertexRandom random_;
-    float count_;
+    uint32_t count_;
+    float count_float_;
 };
 
 // Light sample `index` of `count` at a diffuse vertex, alone (the integrators build one

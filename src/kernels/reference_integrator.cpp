@@ -30,16 +30,14 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
         if (!scene.lights.empty() && gathers_direct_light(m)) {
             const DirectLightSampler lights(scene, m, surface, light_sampling_point(surface, ray.direction), ray.direction,
                                             throughput, key, bounce, shadow_ray_count);
-            ShadowRay shadow;
-            for (uint32_t j = 0; j < shadow_ray_count; ++j) {
-                if (!lights.sample(j, shadow)) continue;
+            lights.sample_all([&](const ShadowRay& shadow) {
                 ++counts.shadow_rays;
                 ++vertex.shadow_rays_traced;
-                if (intersect_any(scene, shadow.ray, shadow.tmax)) continue;
+                if (intersect_any(scene, shadow.ray, shadow.tmax)) return;
                 ++vertex.shadow_rays_unoccluded;
                 vertex.direct_added += shadow.contribution;
                 radiance += shadow.contribution;
-            }
+            });
         }
         if (record) record->push_back(vertex);
 

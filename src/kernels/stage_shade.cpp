@@ -25,9 +25,7 @@ void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         if (has_lights && gathers_direct_light(m)) {
             const DirectLightSampler lights(scene, m, surface, light_sampling_point(surface, ray.direction), ray.direction,
                                             throughput, key, bounce, shadow_ray_count);
-            ShadowRay shadow;
-            for (uint32_t j = 0; j < shadow_ray_count; ++j)
-                if (lights.sample(j, shadow)) shadows.push(shadow, slot);
+            lights.sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
         }
         const auto next = continue_path(scene, m, surface, ray.direction, throughput, key, bounce);
         if (next) next_rays.push(next->ray, next->throughput, slot, next->specular);
