@@ -20,8 +20,8 @@ namespace wt {
 // stratum of the pixel.
 inline Ray camera_ray(const Scene& scene, uint32_t pixel, uint32_t sample, uint64_t key) {
     const uint32_t width = uint32_t(scene.settings.width);
-    const glm::vec2 offset = stratified_pixel_offset(sample, uint32_t(scene.settings.spp), random_float(key, 0, dim::camera_x),
-                                                     random_float(key, 0, dim::camera_y));
+    const UniformPair jitter = VertexRandom(key, 0).pair(dim::camera_x);
+    const glm::vec2 offset = stratified_pixel_offset(sample, uint32_t(scene.settings.spp), jitter.first, jitter.second);
     return scene.camera.generate_ray(float(pixel % width) + offset.x, float(pixel / width) + offset.y);
 }
 
@@ -88,7 +88,8 @@ public:
     // state around every sample.
     [[gnu::always_inline]] bool sample(uint32_t index, ShadowRay& s) const {
         const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
-        const LightSample light = scene_.lights.sample(scene_.triangles, random_(base), random_(base + 1), random_(base + 2));
+        const UniformPair point = random_.pair(base + dim::light_u);
+        const LightSample light = scene_.lights.sample(scene_.triangles, random_(base + dim::light_choice), point.first, point.second);
         const glm::vec3& n = at_.normal;
         const glm::vec3 to_light = light.position - position_;
         const float dist2 = glm::dot(to_light, to_light);
@@ -146,7 +147,9 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
                                                      uint32_t bounce) {
     if (int(bounce) + 1 >= scene.settings.max_bounces) return std::nullopt;
     const VertexRandom random(key, bounce);
-    const BsdfSample s = sample_bsdf(m, surface.normal, d, random(dim::bsdf_u), random(dim::bsdf_v), random(dim::bsdf_choice),
+    const UniformPair direction = random.pair(dim::bsdf_u);
+    const UniformPair choice_and_roulette = random.pair(dim::bsdf_choice);
+    const BsdfSample s = sample_bsdf(m, surface.normal, d, direction.first, direction.second, choice_and_roulette.first,
                                      scene.settings.accuracy.fresnel);
     if (!s.valid) return std::nullopt;
     PathContinuation next;
@@ -159,7 +162,7 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
         // Survival proportional to throughput keeps the estimator unbiased (weight / q) while
         // ending dim paths early; the cap keeps even bright paths terminating.
         const float q = std::fmin(0.95f, std::fmax(next.throughput.x, std::fmax(next.throughput.y, next.throughput.z)));
-        if (!(random(dim::roulette) < q)) return std::nullopt;
+        if (!(choice_and_roulette.second < q)) return std::nullopt;
         next.throughput /= q;
     }
     const glm::vec3 side = glm::dot(s.direction, surface.normal) > 0.0f ? surface.normal : -surface.normal;
