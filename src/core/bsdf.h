@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/float_minmax.h"
 #include "core/fresnel.h"
 #include "core/sampling.h"
 #include "core/scene_description.h"
@@ -27,7 +28,7 @@ inline OrenNayarTerms oren_nayar_terms(float sigma) {
     const float s2 = sigma * sigma;
     const float a = 1.0f - 0.5f * s2 / (s2 + 0.33f);
     const float b = 0.45f * s2 / (s2 + 0.09f);
-    const float energy_scale = 1.0f / std::fmax(1.0f, a + 0.5f * b);
+    const float energy_scale = 1.0f / fmax_float(1.0f, a + 0.5f * b);
     return {a * energy_scale, b * energy_scale};
 }
 
@@ -37,8 +38,8 @@ inline OrenNayarTerms oren_nayar_terms(float sigma) {
 // 0/0 of the azimuth at normal incidence. The floor on the divisor keeps a sample with
 // both directions exactly grazing finite (its cosine factor makes its true weight vanish).
 inline float oren_nayar_factor(const OrenNayarTerms& on, float cos_i, float cos_o, float wi_dot_wo) {
-    const float projected = std::fmax(0.0f, wi_dot_wo - cos_i * cos_o);
-    return on.a + on.b * projected / std::fmax(std::fmax(cos_i, cos_o), 1e-7f);
+    const float projected = fmax_float(0.0f, wi_dot_wo - cos_i * cos_o);
+    return on.a + on.b * projected / fmax_float(fmax_float(cos_i, cos_o), 1e-7f);
 }
 
 // A diffuse BSDF seen from one direction wo, evaluated for many wi: a vertex does this once per

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/bsdf.h"
+#include "core/float_minmax.h"
 #include "core/ray_offset.h"
 #include "core/rng.h"
 #include "core/scene.h"
@@ -161,7 +162,7 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
     if (int(bounce) >= scene.settings.rr_start_bounce) {
         // Survival proportional to throughput keeps the estimator unbiased (weight / q) while
         // ending dim paths early; the cap keeps even bright paths terminating.
-        const float q = std::fmin(0.95f, std::fmax(next.throughput.x, std::fmax(next.throughput.y, next.throughput.z)));
+        const float q = fmin_float(0.95f, fmax_float(next.throughput.x, fmax_float(next.throughput.y, next.throughput.z)));
         if (!(choice_and_roulette.second < q)) return std::nullopt;
         next.throughput /= q;
     }
