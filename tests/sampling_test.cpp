@@ -175,6 +175,37 @@ TEST(LightTable, PicksLightsInProportionToAreaWithPdfOneOverTotalArea) {
     EXPECT_GT(test::chi_square_test(observed, {0.25 * n, 0.75 * n}).p_value, kAlpha);
 }
 
+TEST(LightTable, PicksTheFirstLightWhoseCumulativeAreaExceedsTheChoice) {
+    // Sizes on both sides of the switch from counting to bisecting (light_table.h).
+    for (int count : {1, 2, 3, 8, 9, 30}) {
+        SCOPED_TRACE(count);
+        TriangleSoA tris;
+        std::vector<Material> materials(1);
+        materials[0].emission = glm::vec3(1.0f);
+        std::vector<double> cumulative;
+        double total = 0.0;
+        for (int k = 0; k < count; ++k) {
+            const float a = float(k % 4 + 1);  // area a / 2, exact
+            tris.push_back({0, 0, float(k)}, {a, 0, float(k)}, {0, 1, float(k)}, 0);
+            total += 0.5 * a;
+            cumulative.push_back(total);
+        }
+        const LightTable lights(tris, materials);
+        std::vector<float> cdf;
+        for (double c : cumulative) cdf.push_back(float(c / total));
+        cdf.back() = 1.0f;
+        std::vector<float> choices;
+        for (int i = 0; i < 1000; ++i) choices.push_back(float(i) / 1000.0f);
+        for (float c : cdf) choices.insert(choices.end(), {std::nextafter(c, 0.0f), c, std::nextafter(c, 1.0f)});
+        for (float u : choices) {
+            if (!(u < 1.0f)) continue;
+            int expected = 0;
+            while (expected + 1 < count && !(u < cdf[std::size_t(expected)])) ++expected;
+            EXPECT_EQ(lights.sample(tris, u, 0.25f, 0.5f).position.z, float(expected)) << "u " << u;
+        }
+    }
+}
+
 TEST(Statistics, ChiSquareSurvivalMatchesKnownQuantiles) {
     EXPECT_NEAR(test::chi_square_survival(3.841, 1), 0.05, 1e-4);
     EXPECT_NEAR(test::chi_square_survival(18.307, 10), 0.05, 1e-4);

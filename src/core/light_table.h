@@ -3,6 +3,8 @@
 // proportional to area, so the pdf with respect to area is 1 / total_area everywhere on every
 // light, whatever their emission.
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -38,6 +40,24 @@ public:
     LightSample sample(const TriangleSoA& triangles, float u_choice, float u0, float u1) const;
 
 private:
+    // The first emitter whose cdf exceeds u_choice (the last if none does, or u_choice is NaN).
+    // The cdf never decreases, so that is the number of cdf entries before the last that u_choice
+    // is not below. With a handful of emitters (a quad light is two) they are all counted,
+    // without a branch: as an early-exit scan, which triangle a uniform u_choice picks was a coin
+    // toss for the branch predictor on every shadow ray. Many emitters are bisected.
+    std::size_t pick(float u_choice) const {
+        const std::size_t candidates = candidates_;
+        if (candidates < kCountedEmitters) {
+            std::size_t k = 0;
+            for (std::size_t i = 0; i < candidates; ++i) k += !(u_choice < emitters_[i].cdf);
+            return k;
+        }
+        const auto first = std::partition_point(emitters_.begin(), emitters_.begin() + std::ptrdiff_t(candidates),
+                                                [u_choice](const Emitter& e) { return !(u_choice < e.cdf); });
+        return std::size_t(first - emitters_.begin());
+    }
+    static constexpr std::size_t kCountedEmitters = 8;
+
     // Everything one light sample reads, together: sampling touches one record, not six arrays.
     struct Emitter {
         glm::vec3 v0, e1, e2, normal, radiance;
@@ -45,15 +65,13 @@ private:
         glm::vec3 abs_v0, abs_e1, abs_e2;  // for the sample's error bound, taken once here
     };
     std::vector<Emitter> emitters_;
+    std::size_t candidates_ = 0;  // emitters_.size() - 1: the last is taken when no other is
     float total_area_ = 0.0f;
     float pdf_area_ = 0.0f;  // 1 / total_area_, divided once here rather than per sample
 };
 
 inline LightSample LightTable::sample(const TriangleSoA&, float u_choice, float u0, float u1) const {
-    // A linear scan: scenes have a handful of emitters, and it is branch-predictable.
-    std::size_t k = 0;
-    while (k + 1 < emitters_.size() && !(u_choice < emitters_[k].cdf)) ++k;
-    const Emitter& e = emitters_[k];
+    const Emitter& e = emitters_[pick(u_choice)];
     const glm::vec2 b = sample_uniform_triangle(u0, u1);
     LightSample s;
     s.position = e.v0 + b.x * e.e1 + b.y * e.e2;
