@@ -50,10 +50,13 @@ struct UniformPair {
 };
 
 // The random numbers of one path vertex. One splitmix64 output gives two dimensions: 2k takes
-// bits 40-63 and 2k + 1 bits 16-39 of the hash of counter k. Every output bit of the mixer is
-// a full-avalanche function of the counter (it passes BigCrush on all 64 bits), so two disjoint
-// 24-bit fields are as independent as two hashes, at half the cost: the hash was a seventh of the
-// shading instructions. The bounce part of the counter is multiplied in once per vertex:
+// bits 40-63 and 2k + 1 bits 16-39 of the hash of counter k. The output function is Stafford's
+// "Mix13", chosen for the avalanche of every output bit on every input bit (D. Stafford, "Better
+// Bit Mixing", 2011), and splitmix64's whole 64-bit output passes BigCrush (Steele, Lea & Flood,
+// OOPSLA 2014), so two disjoint 24-bit fields of one output serve as two independent uniforms,
+// at half the cost: the hash was a seventh of the shading instructions. The tests check the
+// pair's joint histogram (RandomFloat.DimensionsAndBouncesAreUncorrelated) and every sampler
+// that consumes pairs. The bounce part of the counter is multiplied in once per vertex:
 // key + (bounce << 32 | k) * gamma == (key + (bounce << 32) * gamma) + k * gamma modulo 2^64.
 struct VertexRandom {
     uint64_t base;
