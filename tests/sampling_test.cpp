@@ -2,11 +2,14 @@
 // exact properties of the stratified pixel pattern and the light table.
 
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <set>
 #include <utility>
 
 #include <gtest/gtest.h>
 
+#include "core/float_minmax.h"
 #include "core/light_table.h"
 #include "core/rng.h"
 #include "core/sampling.h"
@@ -42,6 +45,35 @@ TEST(RandomFloat, DimensionsAndBouncesAreUncorrelated) {
         observed[std::size_t(a * bins + b)] += 1.0;
     }
     EXPECT_GT(test::chi_square_test(observed, expected).p_value, kAlpha);
+}
+
+TEST(RandomFloat, PairsAreTheSameNumbersAsSingleDimensions) {
+    for (uint32_t i = 0; i < 1000; ++i) {
+        const uint64_t key = path_key(5, i, 0);
+        for (uint32_t d = 0; d < 20; d += 2) {
+            const UniformPair p = VertexRandom(key, i % 7).pair(d);
+            ASSERT_EQ(p.first, random_float(key, i % 7, d));
+            ASSERT_EQ(p.second, random_float(key, i % 7, d + 1));
+        }
+    }
+}
+
+TEST(FloatMinMax, SameBitsAsStdFmaxAndFmin) {
+    const float inf = std::numeric_limits<float>::infinity();
+    // volatile: compared with libm at run time, not with the compiler's constant folding.
+    volatile float values[] = {0.0f, -0.0f, 1.0f, -1.0f, 1e-7f, 1e-45f, -1e-45f, 0.95f, 3e38f, inf, -inf, 0.5f};
+    auto bits = [](float f) { uint32_t b; std::memcpy(&b, &f, sizeof b); return b; };
+    for (float x : values) {
+        for (float y : values) {
+            EXPECT_EQ(bits(fmax_float(x, y)), bits(std::fmax(x, y))) << x << " " << y;
+            EXPECT_EQ(bits(fmin_float(x, y)), bits(std::fmin(x, y))) << x << " " << y;
+        }
+        const float nan = std::numeric_limits<float>::quiet_NaN();
+        EXPECT_EQ(bits(fmax_float(x, nan)), bits(x));
+        EXPECT_EQ(bits(fmax_float(nan, x)), bits(x));
+        EXPECT_EQ(bits(fmin_float(x, nan)), bits(x));
+        EXPECT_EQ(bits(fmin_float(nan, x)), bits(x));
+    }
 }
 
 TEST(CosineHemisphere, MatchesItsPdf) {
@@ -141,6 +173,37 @@ TEST(LightTable, PicksLightsInProportionToAreaWithPdfOneOverTotalArea) {
         observed[s.position.z == 0.0f ? 0 : 1] += 1.0;
     }
     EXPECT_GT(test::chi_square_test(observed, {0.25 * n, 0.75 * n}).p_value, kAlpha);
+}
+
+TEST(LightTable, PicksTheFirstLightWhoseCumulativeAreaExceedsTheChoice) {
+    // Sizes on both sides of the switch from counting to bisecting (light_table.h).
+    for (int count : {1, 2, 3, 8, 9, 30}) {
+        SCOPED_TRACE(count);
+        TriangleSoA tris;
+        std::vector<Material> materials(1);
+        materials[0].emission = glm::vec3(1.0f);
+        std::vector<double> cumulative;
+        double total = 0.0;
+        for (int k = 0; k < count; ++k) {
+            const float a = float(k % 4 + 1);  // area a / 2, exact
+            tris.push_back({0, 0, float(k)}, {a, 0, float(k)}, {0, 1, float(k)}, 0);
+            total += 0.5 * a;
+            cumulative.push_back(total);
+        }
+        const LightTable lights(tris, materials);
+        std::vector<float> cdf;
+        for (double c : cumulative) cdf.push_back(float(c / total));
+        cdf.back() = 1.0f;
+        std::vector<float> choices;
+        for (int i = 0; i < 1000; ++i) choices.push_back(float(i) / 1000.0f);
+        for (float c : cdf) choices.insert(choices.end(), {std::nextafter(c, 0.0f), c, std::nextafter(c, 1.0f)});
+        for (float u : choices) {
+            if (!(u < 1.0f)) continue;
+            int expected = 0;
+            while (expected + 1 < count && !(u < cdf[std::size_t(expected)])) ++expected;
+            EXPECT_EQ(lights.sample(tris, u, 0.25f, 0.5f).position.z, float(expected)) << "u " << u;
+        }
+    }
 }
 
 TEST(Statistics, ChiSquareSurvivalMatchesKnownQuantiles) {

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/float_minmax.h"
 #include "core/fresnel.h"
 #include "core/sampling.h"
 #include "core/scene_description.h"
@@ -27,7 +28,7 @@ inline OrenNayarTerms oren_nayar_terms(float sigma) {
     const float s2 = sigma * sigma;
     const float a = 1.0f - 0.5f * s2 / (s2 + 0.33f);
     const float b = 0.45f * s2 / (s2 + 0.09f);
-    const float energy_scale = 1.0f / std::fmax(1.0f, a + 0.5f * b);
+    const float energy_scale = 1.0f / fmax_float(1.0f, a + 0.5f * b);
     return {a * energy_scale, b * energy_scale};
 }
 
@@ -37,17 +38,41 @@ inline OrenNayarTerms oren_nayar_terms(float sigma) {
 // 0/0 of the azimuth at normal incidence. The floor on the divisor keeps a sample with
 // both directions exactly grazing finite (its cosine factor makes its true weight vanish).
 inline float oren_nayar_factor(const OrenNayarTerms& on, float cos_i, float cos_o, float wi_dot_wo) {
-    const float projected = std::fmax(0.0f, wi_dot_wo - cos_i * cos_o);
-    return on.a + on.b * projected / std::fmax(std::fmax(cos_i, cos_o), 1e-7f);
+    const float projected = fmax_float(0.0f, wi_dot_wo - cos_i * cos_o);
+    return on.a + on.b * projected / fmax_float(fmax_float(cos_i, cos_o), 1e-7f);
 }
+
+// A diffuse BSDF seen from one direction wo, evaluated for many wi: a vertex does this once per
+// light sample, so what depends only on wo (its cosine, albedo / pi, the Oren-Nayar
+// coefficients and their three divisions) is computed once, in the constructor.
+class DiffuseBsdfAtView {
+public:
+    // n faces wo's side.
+    DiffuseBsdfAtView(const Material& m, const glm::vec3& n, const glm::vec3& wo)
+        : wo_(wo),
+          albedo_(m.albedo),
+          lambert_(m.albedo * kInvPi),
+          cos_o_(glm::dot(n, wo)),
+          oren_nayar_(m.type == MaterialType::lambertian ? OrenNayarTerms{1.0f, 0.0f} : oren_nayar_terms(m.sigma)),
+          lambertian_(m.type == MaterialType::lambertian) {}
+
+    // f(wo, wi), given cos_i = dot(n, wi). Zero below the surface.
+    glm::vec3 operator()(const glm::vec3& wi, float cos_i) const {
+        if (cos_i <= 0.0f || cos_o_ <= 0.0f) return glm::vec3(0.0f);
+        if (lambertian_) return lambert_;
+        return albedo_ * (kInvPi * oren_nayar_factor(oren_nayar_, cos_i, cos_o_, glm::dot(wi, wo_)));
+    }
+
+private:
+    glm::vec3 wo_, albedo_, lambert_;
+    float cos_o_;
+    OrenNayarTerms oren_nayar_;
+    bool lambertian_;
+};
 
 // BSDF value f(wo, wi) of a diffuse material; n faces wo's side. Zero below the surface.
 inline glm::vec3 eval_diffuse_bsdf(const Material& m, const glm::vec3& n, const glm::vec3& wo, const glm::vec3& wi) {
-    const float cos_i = glm::dot(n, wi);
-    const float cos_o = glm::dot(n, wo);
-    if (cos_i <= 0.0f || cos_o <= 0.0f) return glm::vec3(0.0f);
-    if (m.type == MaterialType::lambertian) return m.albedo * kInvPi;
-    return m.albedo * (kInvPi * oren_nayar_factor(oren_nayar_terms(m.sigma), cos_i, cos_o, glm::dot(wi, wo)));
+    return DiffuseBsdfAtView(m, n, wo)(wi, glm::dot(n, wi));
 }
 
 struct BsdfSample {

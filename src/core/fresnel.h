@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/float_minmax.h"
+
 namespace wt {
 
 // Schlick 1994. cos_outside is the cosine of the angle on the optically thinner side: the
@@ -43,7 +45,7 @@ struct Refraction {
 };
 inline std::optional<Refraction> refract(const glm::vec3& d, const glm::vec3& n, float eta) {
     const float cos_i = -glm::dot(d, n);
-    const float sin2_t = eta * eta * std::fmax(0.0f, 1.0f - cos_i * cos_i);
+    const float sin2_t = eta * eta * fmax_float(0.0f, 1.0f - cos_i * cos_i);
     if (sin2_t >= 1.0f) return std::nullopt;
     const float cos_t = std::sqrt(1.0f - sin2_t);
     return Refraction{glm::normalize(eta * d + (eta * cos_i - cos_t) * n), cos_t};

@@ -3,7 +3,6 @@
 #include <glm/geometric.hpp>
 
 #include "core/ray_offset.h"
-#include "core/sampling.h"
 
 namespace wt {
 
@@ -18,27 +17,15 @@ LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>
         if (area <= 0.0) continue;  // the loader rejects degenerate lights; built-in scenes may not
         running_area += area;
         cumulative.push_back(running_area);
-        emitters_.push_back({triangles.vertex0(i), triangles.edge1(i), triangles.edge2(i), triangles.normal(i), m.emission, 0.0f,
+        const glm::vec3 v0 = triangles.vertex0(i), e1 = triangles.edge1(i), e2 = triangles.edge2(i);
+        emitters_.push_back({v0, e1, e2, triangles.normal(i), m.emission, 0.0f, magnitude(v0), magnitude(e1), magnitude(e2),
                              parallelogram});
     }
     total_area_ = float(running_area);
+    pdf_area_ = 1.0f / total_area_;
     for (std::size_t k = 0; k < emitters_.size(); ++k) emitters_[k].cdf = float(cumulative[k] / running_area);
     if (!emitters_.empty()) emitters_.back().cdf = 1.0f;  // so u_choice < 1 always finds an entry
-}
-
-LightSample LightTable::sample(const TriangleSoA&, float u_choice, float u0, float u1) const {
-    // A linear scan: scenes have a handful of emitters, and it is branch-predictable.
-    std::size_t k = 0;
-    while (k + 1 < emitters_.size() && !(u_choice < emitters_[k].cdf)) ++k;
-    const Emitter& e = emitters_[k];
-    const glm::vec2 b = e.parallelogram ? glm::vec2(u0, u1) : sample_uniform_triangle(u0, u1);
-    LightSample s;
-    s.position = e.v0 + b.x * e.e1 + b.y * e.e2;
-    s.error = triangle_point_error(e.v0, e.e1, e.e2, b.x, b.y);
-    s.normal = e.normal;
-    s.radiance = e.radiance;
-    s.pdf_area = 1.0f / total_area_;
-    return s;
+    candidates_ = emitters_.empty() ? 0 : emitters_.size() - 1;
 }
 
 }  // namespace wt

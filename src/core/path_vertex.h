@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/bsdf.h"
+#include "core/float_minmax.h"
 #include "core/ray_offset.h"
 #include "core/rng.h"
 #include "core/scene.h"
@@ -20,8 +21,8 @@ namespace wt {
 // stratum of the pixel.
 inline Ray camera_ray(const Scene& scene, uint32_t pixel, uint32_t sample, uint64_t key) {
     const uint32_t width = uint32_t(scene.settings.width);
-    const glm::vec2 offset = stratified_pixel_offset(sample, uint32_t(scene.settings.spp), random_float(key, 0, dim::camera_x),
-                                                     random_float(key, 0, dim::camera_y));
+    const UniformPair jitter = VertexRandom(key, 0).pair(dim::camera_x);
+    const glm::vec2 offset = stratified_pixel_offset(sample, uint32_t(scene.settings.spp), jitter.first, jitter.second);
     return scene.camera.generate_ray(float(pixel % width) + offset.x, float(pixel / width) + offset.y);
 }
 
@@ -54,37 +55,83 @@ inline LightSamplingPoint light_sampling_point(const SurfacePoint& surface, cons
     return {n, offset_ray_origin(surface.position, surface.error, n)};
 }
 
-// Light sample `index` of `count` at a diffuse vertex (next-event estimation). The estimate is
-// f * Le * cos_x * cos_y / (dist^2 * pdf_area), averaged over the `count` shadow rays. Empty when
-// the sample cannot contribute (light seen from behind, point below the surface), so no ray is
-// traced for it.
+// The light samples of one diffuse vertex (next-event estimation). Sample `index` of `count`
+// estimates f * Le * cos_x * cos_y / (dist^2 * pdf_area), averaged over the `count` shadow rays.
+// What the samples share (the ray origin, the BSDF's view-dependent part, where the vertex's
+// random numbers start) is computed once, in the constructor, not once per shadow ray.
+class DirectLightSampler {
+public:
+    DirectLightSampler(const Scene& scene, const Material& m, const SurfacePoint& surface, const LightSamplingPoint& at,
+                       const glm::vec3& d, const glm::vec3& throughput, uint64_t key, uint32_t bounce, uint32_t count)
+        : scene_(scene),
+          at_(at),
+          position_(surface.position),
+          throughput_(throughput),
+          bsdf_(m, at.normal, -d),
+          random_(key, bounce),
+          count_(count),
+          count_float_(float(count)) {}
+
+    // Every light sample of the vertex, in index order; emit(const ShadowRay&) gets each one that
+    // can contribute. One loop here rather than one call per sample in the caller: the shared
+    // state stays in registers across the samples.
+    template <typename Emit>
+    void sample_all(Emit&& emit) const {
+        ShadowRay s;
+        for (uint32_t j = 0; j < count_; ++j)
+            if (sample(j, s)) emit(s);
+    }
+
+    // Writes light sample `index` to `s`; false, leaving `s` unspecified, when the sample cannot
+    // contribute (light seen from behind, point below the surface), so no ray is traced for it.
+    // (An out-parameter, not std::optional: the 40-byte copy out of it was 4 % of the sample.)
+    // Always inlined: g++ judges it too big, and as a call it spills and reloads the shared
+    // state around every sample.
+    [[gnu::always_inline]] bool sample(uint32_t index, ShadowRay& s) const {
+        const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
+        const UniformPair point = random_.pair(base + dim::light_u);
+        const LightSample light = scene_.lights.sample(scene_.triangles, random_(base + dim::light_choice), point.first, point.second);
+        const glm::vec3& n = at_.normal;
+        const glm::vec3 to_light = light.position - position_;
+        const float dist2 = glm::dot(to_light, to_light);
+        if (!(dist2 > 0.0f)) return false;
+        const float dist = std::sqrt(dist2);
+        const glm::vec3 wi = to_light / dist;
+        const float cos_x = glm::dot(n, wi);
+        const float cos_y = -glm::dot(light.normal, wi);
+        if (cos_x <= 0.0f || cos_y <= 0.0f) return false;
+
+        const glm::vec3 f = bsdf_(wi, cos_x);
+        const float geometry = cos_x * cos_y / (dist2 * light.pdf_area * count_float_);
+        s.ray.origin = at_.ray_origin;
+        // Both ends are moved off their surfaces, so neither the shading point's nor the light's
+        // own triangle can block the ray.
+        const glm::vec3 target = offset_ray_origin(light.position, light.error, light.normal);
+        const glm::vec3 span = target - s.ray.origin;
+        s.tmax = glm::length(span);
+        s.ray.direction = span / s.tmax;
+        s.contribution = throughput_ * f * light.radiance * geometry;
+        return true;
+    }
+
+private:
+    const Scene& scene_;
+    LightSamplingPoint at_;
+    glm::vec3 position_;  // the shading point, before the offset
+    glm::vec3 throughput_;
+    DiffuseBsdfAtView bsdf_;
+    VertexRandom random_;
+    uint32_t count_;
+    float count_float_;
+};
+
+// Light sample `index` of `count` at a diffuse vertex, alone (the integrators build one
+// DirectLightSampler per vertex instead).
 inline std::optional<ShadowRay> sample_light(const Scene& scene, const Material& m, const SurfacePoint& surface,
                                              const LightSamplingPoint& at, const glm::vec3& d, const glm::vec3& throughput, uint64_t key,
                                              uint32_t bounce, uint32_t index, uint32_t count) {
-    const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
-    const LightSample light = scene.lights.sample(scene.triangles, random_float(key, bounce, base),
-                                                  random_float(key, bounce, base + 1), random_float(key, bounce, base + 2));
-    const glm::vec3& n = at.normal;
-    const glm::vec3 to_light = light.position - surface.position;
-    const float dist2 = glm::dot(to_light, to_light);
-    if (!(dist2 > 0.0f)) return std::nullopt;
-    const float dist = std::sqrt(dist2);
-    const glm::vec3 wi = to_light / dist;
-    const float cos_x = glm::dot(n, wi);
-    const float cos_y = -glm::dot(light.normal, wi);
-    if (cos_x <= 0.0f || cos_y <= 0.0f) return std::nullopt;
-
-    const glm::vec3 f = eval_diffuse_bsdf(m, n, -d, wi);
-    const float geometry = cos_x * cos_y / (dist2 * light.pdf_area * float(count));
     ShadowRay s;
-    s.ray.origin = at.ray_origin;
-    // Both ends are moved off their surfaces, so neither the shading point's nor the light's
-    // own triangle can block the ray.
-    const glm::vec3 target = offset_ray_origin(light.position, light.error, light.normal);
-    const glm::vec3 span = target - s.ray.origin;
-    s.tmax = glm::length(span);
-    s.ray.direction = span / s.tmax;
-    s.contribution = throughput * f * light.radiance * geometry;
+    if (!DirectLightSampler(scene, m, surface, at, d, throughput, key, bounce, count).sample(index, s)) return std::nullopt;
     return s;
 }
 
@@ -100,8 +147,10 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
                                                      const glm::vec3& d, const glm::vec3& throughput, uint64_t key,
                                                      uint32_t bounce) {
     if (int(bounce) + 1 >= scene.settings.max_bounces) return std::nullopt;
-    const BsdfSample s = sample_bsdf(m, surface.normal, d, random_float(key, bounce, dim::bsdf_u),
-                                     random_float(key, bounce, dim::bsdf_v), random_float(key, bounce, dim::bsdf_choice),
+    const VertexRandom random(key, bounce);
+    const UniformPair direction = random.pair(dim::bsdf_u);
+    const UniformPair choice_and_roulette = random.pair(dim::bsdf_choice);
+    const BsdfSample s = sample_bsdf(m, surface.normal, d, direction.first, direction.second, choice_and_roulette.first,
                                      scene.settings.accuracy.fresnel);
     if (!s.valid) return std::nullopt;
     PathContinuation next;
@@ -113,8 +162,8 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
     if (int(bounce) >= scene.settings.rr_start_bounce) {
         // Survival proportional to throughput keeps the estimator unbiased (weight / q) while
         // ending dim paths early; the cap keeps even bright paths terminating.
-        const float q = std::fmin(0.95f, std::fmax(next.throughput.x, std::fmax(next.throughput.y, next.throughput.z)));
-        if (!(random_float(key, bounce, dim::roulette) < q)) return std::nullopt;
+        const float q = fmin_float(0.95f, fmax_float(next.throughput.x, fmax_float(next.throughput.y, next.throughput.z)));
+        if (!(choice_and_roulette.second < q)) return std::nullopt;
         next.throughput /= q;
     }
     const glm::vec3 side = glm::dot(s.direction, surface.normal) > 0.0f ? surface.normal : -surface.normal;

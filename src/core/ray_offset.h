@@ -27,14 +27,26 @@ constexpr float rounding_gamma(int n) {
     return float(n) * u / (1.0f - float(n) * u);
 }
 
+// |v| per component, as one and-mask each. glm::abs is `x >= 0 ? x : -x`, which g++ turns into
+// a compare and a branch per component, on the path of every spawned and shadow ray. (The two
+// differ only in the sign they give -0, which no bound here cares about.)
+inline glm::vec3 magnitude(const glm::vec3& v) { return {std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}; }
+
 // Error bound of v0 + u e1 + v e2 computed in float with e1 = v1 - v0, e2 = v2 - v0 rounded.
 inline glm::vec3 triangle_point_error(const glm::vec3& v0, const glm::vec3& e1, const glm::vec3& e2, float u, float v) {
-    return rounding_gamma(7) * (glm::abs(v0) + glm::abs(u * e1) + glm::abs(v * e2));
+    return rounding_gamma(7) * (magnitude(v0) + magnitude(u * e1) + magnitude(v * e2));
+}
+
+// The same bound from |v0|, |e1|, |e2| computed beforehand, for barycentrics u, v >= 0: rounding
+// is symmetric, so |u * e1| == u * |e1| exactly and the result is the same bits.
+inline glm::vec3 triangle_point_error_from_magnitudes(const glm::vec3& abs_v0, const glm::vec3& abs_e1, const glm::vec3& abs_e2,
+                                                      float u, float v) {
+    return rounding_gamma(7) * (abs_v0 + u * abs_e1 + v * abs_e2);
 }
 
 // Error bound of c + r * normalize(...), the hit point reprojected onto its sphere.
 inline glm::vec3 sphere_point_error(const glm::vec3& center, float radius, const glm::vec3& unit_normal) {
-    return rounding_gamma(5) * (glm::abs(center) + glm::abs(radius * unit_normal));
+    return rounding_gamma(5) * (magnitude(center) + magnitude(radius * unit_normal));
 }
 
 // The next float towards +inf / -inf, inline: std::nextafter is a libm call, and this runs
@@ -53,7 +65,7 @@ inline float next_float_down(float v) { return -next_float_up(-v); }
 // p: the computed point, error: a per-component bound on |p - exact point|, n: unit normal
 // pointing to the side the new ray leaves towards.
 inline glm::vec3 offset_ray_origin(const glm::vec3& p, const glm::vec3& error, const glm::vec3& n) {
-    const float distance = glm::dot(glm::abs(n), error);
+    const float distance = glm::dot(magnitude(n), error);
     const glm::vec3 offset = distance * n;
     glm::vec3 out = p + offset;
     for (int i = 0; i < 3; ++i) {
@@ -65,7 +77,7 @@ inline glm::vec3 offset_ray_origin(const glm::vec3& p, const glm::vec3& error, c
 
 // For a point computed in a few operations from values no larger than itself (error ~ |p|).
 inline glm::vec3 offset_ray_origin(const glm::vec3& p, const glm::vec3& n) {
-    return offset_ray_origin(p, rounding_gamma(7) * glm::abs(p), n);
+    return offset_ray_origin(p, rounding_gamma(7) * magnitude(p), n);
 }
 
 }  // namespace wt

@@ -7,6 +7,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/float_minmax.h"
+
 namespace wt {
 
 constexpr float kPi = 3.14159265358979323846f;
@@ -50,7 +52,7 @@ inline glm::vec2 sample_concentric_disk(float u0, float u1) {
 // Local frame, z is the normal. z is kept strictly positive so the pdf never is zero.
 inline glm::vec3 sample_cosine_hemisphere(float u0, float u1) {
     const glm::vec2 d = sample_concentric_disk(u0, u1);
-    const float z = std::sqrt(std::fmax(1e-12f, 1.0f - d.x * d.x - d.y * d.y));
+    const float z = std::sqrt(fmax_float(1e-12f, 1.0f - d.x * d.x - d.y * d.y));
     return {d.x, d.y, z};
 }
 

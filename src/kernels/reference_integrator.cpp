@@ -28,17 +28,16 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
             radiance += vertex.emission_added;
         }
         if (!scene.lights.empty() && gathers_direct_light(m)) {
-            const LightSamplingPoint at = light_sampling_point(surface, ray.direction);
-            for (uint32_t j = 0; j < shadow_ray_count; ++j) {
-                const auto shadow = sample_light(scene, m, surface, at, ray.direction, throughput, key, bounce, j, shadow_ray_count);
-                if (!shadow) continue;
+            const DirectLightSampler lights(scene, m, surface, light_sampling_point(surface, ray.direction), ray.direction,
+                                            throughput, key, bounce, shadow_ray_count);
+            lights.sample_all([&](const ShadowRay& shadow) {
                 ++counts.shadow_rays;
                 ++vertex.shadow_rays_traced;
-                if (intersect_any(scene, shadow->ray, shadow->tmax)) continue;
+                if (intersect_any(scene, shadow.ray, shadow.tmax)) return;
                 ++vertex.shadow_rays_unoccluded;
-                vertex.direct_added += shadow->contribution;
-                radiance += shadow->contribution;
-            }
+                vertex.direct_added += shadow.contribution;
+                radiance += shadow.contribution;
+            });
         }
         if (record) record->push_back(vertex);
 

@@ -23,11 +23,9 @@ void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
 
         if (rays.count_emission[i]) paths.add_radiance(slot, throughput * emitted_towards(m, surface.normal, ray.direction));
         if (has_lights && gathers_direct_light(m)) {
-            const LightSamplingPoint at = light_sampling_point(surface, ray.direction);
-            for (uint32_t j = 0; j < shadow_ray_count; ++j) {
-                const auto shadow = sample_light(scene, m, surface, at, ray.direction, throughput, key, bounce, j, shadow_ray_count);
-                if (shadow) shadows.push(*shadow, slot);
-            }
+            const DirectLightSampler lights(scene, m, surface, light_sampling_point(surface, ray.direction), ray.direction,
+                                            throughput, key, bounce, shadow_ray_count);
+            lights.sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
         }
         const auto next = continue_path(scene, m, surface, ray.direction, throughput, key, bounce);
         if (next) next_rays.push(next->ray, next->throughput, slot, next->specular);
