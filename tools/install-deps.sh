@@ -7,6 +7,7 @@ packages=(
   g++ cmake make                # toolchain
   libglm-dev                    # vector maths
   libopenimageio-dev            # image output (.exr, .png)
+  openimageio-tools             # Debian 12's OpenImageIO CMake targets name /usr/bin/iconvert and friends
   libopencv-core-dev            # Debian 12's OpenImageIO CMake target names /usr/include/opencv4
   nlohmann-json3-dev            # scene files
   libcli11-dev                  # command line
