@@ -76,6 +76,33 @@ TEST(FloatMinMax, SameBitsAsStdFmaxAndFmin) {
     }
 }
 
+// The inline octant sin/cos against double precision, on a dense grid of the whole range
+// and its end points: within 2 ulp of the correctly rounded value.
+TEST(QuarterPiTrig, WithinTwoUlpOfDoublePrecisionOnTheWholeOctant) {
+    auto ulps = [](float got, double want) {
+        const float w = float(want);
+        return std::fabs(double(got) - want) / double(std::nextafter(std::fabs(w), 2.0f) - std::fabs(w));
+    };
+    const float edge = kPi / 4.0f;
+    double worst_sin = 0.0, worst_cos = 0.0;
+    const int n = 1 << 20;
+    for (int i = 0; i <= n; ++i) {
+        const float x = -edge + 2.0f * edge * float(i) / float(n);
+        const SinCos t = sin_cos_quarter_pi(x);
+        worst_sin = std::max(worst_sin, ulps(t.sin, std::sin(double(x))));
+        worst_cos = std::max(worst_cos, ulps(t.cos, std::cos(double(x))));
+    }
+    for (float x : {0.0f, -0.0f, edge, -edge, 1e-30f, -1e-20f}) {
+        const SinCos t = sin_cos_quarter_pi(x);
+        worst_sin = std::max(worst_sin, ulps(t.sin, std::sin(double(x))));
+        worst_cos = std::max(worst_cos, ulps(t.cos, std::cos(double(x))));
+    }
+    EXPECT_LE(worst_sin, 2.0);
+    EXPECT_LE(worst_cos, 2.0);
+    EXPECT_EQ(sin_cos_quarter_pi(0.0f).cos, 1.0f);
+    EXPECT_EQ(sin_cos_quarter_pi(0.0f).sin, 0.0f);
+}
+
 TEST(CosineHemisphere, MatchesItsPdf) {
     // Under pdf cos(theta)/pi, cos^2(theta) and phi are independent and uniform: equal-probability
     // bins are a grid in (cos^2 theta, phi).

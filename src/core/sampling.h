@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/float_minmax.h"
+#include "core/quarter_pi_trig.h"
 
 namespace wt {
 
@@ -33,19 +34,18 @@ struct Frame {
 
 // Shirley & Chiu's concentric map: keeps strata of the square compact on the disk, so the
 // stratified pixel and light samples stay stratified after warping.
+// The angle is pi/4 * (b/a), or pi/2 - pi/4 * (a/b), whose cos and sin are the sin and cos
+// of pi/4 * (a/b): either way only the octant [-pi/4, pi/4] is evaluated.
 inline glm::vec2 sample_concentric_disk(float u0, float u1) {
     const float a = 2.0f * u0 - 1.0f;
     const float b = 2.0f * u1 - 1.0f;
     if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f};
-    float r, phi;
     if (std::abs(a) > std::abs(b)) {
-        r = a;
-        phi = (kPi / 4.0f) * (b / a);
-    } else {
-        r = b;
-        phi = (kPi / 2.0f) - (kPi / 4.0f) * (a / b);
+        const SinCos t = sin_cos_quarter_pi((kPi / 4.0f) * (b / a));
+        return {a * t.cos, a * t.sin};
     }
-    return {r * std::cos(phi), r * std::sin(phi)};
+    const SinCos t = sin_cos_quarter_pi((kPi / 4.0f) * (a / b));
+    return {b * t.sin, b * t.cos};
 }
 
 // Malley's method: project the disk up to the hemisphere; pdf = cos(theta) / pi.
