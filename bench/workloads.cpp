@@ -1,7 +1,6 @@
 #include "workloads.h"
 
 #include <cmath>
-#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -132,7 +131,7 @@ RaySet shadow_rays(const Scene& scene, uint32_t count, uint64_t incoherent_seed,
     // so the workload does not depend on the machine that builds it.
     const IntersectKernels& scalar = intersect_kernels(Isa::scalar);
     const SceneView scene_soa = scene_view(scene);
-    const glm::vec3 unit_throughput(1.0f);  // sample_light's contribution is not used here
+    const glm::vec3 unit_throughput(1.0f);  // the samples' contribution is not used here
     RaySet rays;
     // About 7 in 10 incoherent rays yield a shadow ray; the stream is read in chunks until enough have.
     constexpr uint32_t kChunk = 1u << 18;
@@ -147,10 +146,9 @@ RaySet shadow_rays(const Scene& scene, uint32_t count, uint64_t incoherent_seed,
             const SurfacePoint surface = surface_at(scene, probe, hit);
             const Material& material = scene.materials[surface.material];
             if (!gathers_direct_light(material)) continue;
-            const LightSamplingPoint shading_point = light_sampling_point(surface, probe.direction);
-            const std::optional<ShadowRay> shadow = sample_light(scene, material, surface, shading_point, probe.direction,
-                                                                 unit_throughput, path_key(light_seed, first + i, 0), 0, 0, 1);
-            if (shadow) rays.push_back(shadow->ray, shadow->tmax);
+            const DirectLightSampler lights(scene, material, surface, light_sampling_point(surface, probe.direction),
+                                            probe.direction, unit_throughput, path_key(light_seed, first + i, 0), 0, 1);
+            lights.sample_all([&](const ShadowRay& shadow) { rays.push_back(shadow.ray, shadow.tmax); });
         }
     }
     return rays;

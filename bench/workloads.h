@@ -47,7 +47,7 @@ RaySet incoherent_rays(const Scene& scene, uint32_t first_index, uint32_t count,
 
 // `count` shadow rays exactly as the renderer builds them: the closest hits of the incoherent
 // stream (seed incoherent_seed) are the shading points; at each one that gathers direct light
-// (diffuse, not black: not the mirror, glass or the light itself) sample_light() picks a
+// (diffuse, not black: not the mirror, glass or the light itself) DirectLightSampler picks a
 // uniform point on the lights and offsets both ends off their surfaces; samples it rejects
 // (light behind the surface or seen from its back) trace no ray, as in the renderer. Bounded by
 // the distance to the offset light point.

@@ -125,16 +125,6 @@ private:
     float count_float_;
 };
 
-// Light sample `index` of `count` at a diffuse vertex, alone (the integrators build one
-// DirectLightSampler per vertex instead).
-inline std::optional<ShadowRay> sample_light(const Scene& scene, const Material& m, const SurfacePoint& surface,
-                                             const LightSamplingPoint& at, const glm::vec3& d, const glm::vec3& throughput, uint64_t key,
-                                             uint32_t bounce, uint32_t index, uint32_t count) {
-    ShadowRay s;
-    if (!DirectLightSampler(scene, m, surface, at, d, throughput, key, bounce, count).sample(index, s)) return std::nullopt;
-    return s;
-}
-
 struct PathContinuation {
     Ray ray;
     glm::vec3 throughput;
