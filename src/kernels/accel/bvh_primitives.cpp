@@ -1,6 +1,21 @@
 #include "kernels/accel/bvh_primitives.h"
 
+#include <algorithm>
+
 namespace wt {
+
+void BvhPrimitives::reserve(const Scene& scene, std::size_t count) {
+    const std::size_t planar = std::min(count, scene.triangles.size()), spheres = scene.spheres.size();
+    for (auto* a : {&v0x, &v0y, &v0z}) a->reserve(planar);
+    if (test == TriangleTest::watertight) {
+        for (auto* a : {&v1x, &v1y, &v1z, &v2x, &v2y, &v2z}) a->reserve(planar);
+    } else {
+        for (auto* a : {&e1x, &e1y, &e1z, &e2x, &e2y, &e2z, &nx, &ny, &nz}) a->reserve(planar);
+    }
+    planar_prim.reserve(planar);
+    for (auto* a : {&cx, &cy, &cz, &radius}) a->reserve(spheres);
+    sphere_prim.reserve(spheres);
+}
 
 void BvhPrimitives::append(const Scene& scene, uint32_t id) {
     const TriangleSoA& t = scene.triangles;

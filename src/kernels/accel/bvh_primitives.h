@@ -24,6 +24,8 @@ struct BvhPrimitives {
 
     uint32_t planar_count() const { return uint32_t(planar_prim.size()); }
     uint32_t sphere_count() const { return uint32_t(sphere_prim.size()); }
+    // Room for every primitive of the scene (`count` of them in the tree), in the arrays `test` uses.
+    void reserve(const Scene& scene, std::size_t count);
     // Appends scene primitive `id` (a triangle or parallelogram if below the triangle count).
     void append(const Scene& scene, uint32_t id);
     std::size_t bytes() const;
