@@ -10,6 +10,7 @@
 
 #include "core/film.h"
 #include "core/scene.h"
+#include "kernels/accel/bvh_view.h"
 #include "kernels/render_stats.h"
 #include "kernels/tiles.h"
 
@@ -28,9 +29,12 @@ struct PathVertexRecord {
 };
 
 // Radiance of sample `sample` of pixel `pixel`. If `record` is given, each vertex is appended.
+// Rays are traced through `bvh` when given (the scalar kernels: the same hits as the flat
+// loops, found in logarithmic time), else against every primitive.
 glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
-                               std::vector<PathVertexRecord>* record = nullptr);
+                               std::vector<PathVertexRecord>* record = nullptr, const BvhView* bvh = nullptr);
 
-void render_reference_tile(const Scene& scene, const Tile& tile, Film& film, RayCounts& counts);
+void render_reference_tile(const Scene& scene, const Tile& tile, Film& film, RayCounts& counts,
+                           const BvhView* bvh = nullptr);
 
 }  // namespace wt
