@@ -91,9 +91,12 @@ struct BsdfSample {
     bool valid = false;
 };
 
+// The two halves of sample_bsdf, also called about a shading normal (shading_normal_bsdf.h).
+// Always inlined, each into both callers, so sample_bsdf compiles to what it was as one function.
+
 // A cosine-weighted direction about n (unit, facing the incoming direction d) and its weight
 // f * cos / pdf for a diffuse material. Invalid when rounding puts it on n's horizon.
-inline BsdfSample sample_diffuse(const Material& m, const glm::vec3& n, const glm::vec3& d, float u0, float u1) {
+[[gnu::always_inline]] inline BsdfSample sample_diffuse(const Material& m, const glm::vec3& n, const glm::vec3& d, float u0, float u1) {
     BsdfSample s;
     const glm::vec3 local = sample_cosine_hemisphere(u0, u1);
     s.direction = glm::normalize(Frame(n).to_world(local));
@@ -111,8 +114,8 @@ inline BsdfSample sample_diffuse(const Material& m, const glm::vec3& n, const gl
 
 // Mirror or glass about n (unit, facing the incoming direction d: dot(d, n) < 0). `front` says
 // whether d arrived from the outside of the glass (the side its geometric normal faces).
-inline BsdfSample sample_specular(const Material& m, const glm::vec3& n, bool front, const glm::vec3& d, float u_choice,
-                                  FresnelModel fresnel) {
+[[gnu::always_inline]] inline BsdfSample sample_specular(const Material& m, const glm::vec3& n, bool front, const glm::vec3& d,
+                                                         float u_choice, FresnelModel fresnel) {
     BsdfSample s;
     s.specular = s.valid = true;
     if (m.type == MaterialType::mirror) {
@@ -144,8 +147,10 @@ inline BsdfSample sample_specular(const Material& m, const glm::vec3& n, bool fr
 // Samples the next direction. n_geom is the geometric normal (outward for spheres, winding for
 // triangles); d the incoming ray direction. u_choice and the Fresnel model only matter for glass.
 // Inside/outside of glass is decided by the geometric normal: spheres' normals point outward.
-inline BsdfSample sample_bsdf(const Material& m, const glm::vec3& n_geom, const glm::vec3& d, float u0, float u1,
-                              float u_choice, FresnelModel fresnel = FresnelModel::schlick) {
+// Out of line, as g++ chose before there was a second sampler next to it: inlined into the path
+// continuation it costs the shade loop more than the call.
+[[gnu::noinline]] inline BsdfSample sample_bsdf(const Material& m, const glm::vec3& n_geom, const glm::vec3& d, float u0, float u1,
+                                                float u_choice, FresnelModel fresnel = FresnelModel::schlick) {
     const bool front = glm::dot(d, n_geom) < 0.0f;
     const glm::vec3 n = front ? n_geom : -n_geom;  // facing the incoming ray
     if (m.is_specular()) return sample_specular(m, n, front, d, u_choice, fresnel);

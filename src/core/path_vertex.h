@@ -50,11 +50,13 @@ struct LightSamplingPoint {
     glm::vec3 normal;          // geometric, facing the incoming ray
     glm::vec3 shading_normal;  // turned to the same side; `normal` itself when flat
     glm::vec3 ray_origin;      // the shading point moved off its surface on that side
+    bool smooth;               // SurfacePoint::smooth
 };
 
 inline LightSamplingPoint light_sampling_point(const SurfacePoint& surface, const glm::vec3& d) {
     const glm::vec3 n = glm::dot(d, surface.normal) < 0.0f ? surface.normal : -surface.normal;
-    return {n, shading_normal_facing(surface.shading_normal, n), offset_ray_origin(surface.position, surface.error, n)};
+    return {n, surface.smooth ? shading_normal_facing(surface.shading_normal, n) : n,
+            offset_ray_origin(surface.position, surface.error, n), surface.smooth};
 }
 
 // The light samples of one diffuse vertex (next-event estimation). Sample `index` of `count`
@@ -69,7 +71,7 @@ public:
           at_(at),
           position_(surface.position),
           throughput_(throughput),
-          bsdf_(m, at.normal, at.shading_normal, -d),
+          bsdf_(m, at.shading_normal, -d),
           random_(key, bounce),
           count_(count),
           count_float_(float(count)) {}
@@ -77,22 +79,18 @@ public:
     // Every light sample of the vertex, in index order; emit(const ShadowRay&) gets each one that
     // can contribute. One loop here rather than one call per sample in the caller: the shared
     // state stays in registers across the samples.
-    // A flat vertex runs the flat sample() code and nothing else; the choice is made once here.
+    // The choice between the flat and the folded BSDF is made once per vertex, here.
     template <typename Emit>
     void sample_all(Emit&& emit) const {
+        if (at_.smooth) return sample_all_folded(emit);
         ShadowRay s;
-        if (at_.shading_normal == at_.normal) {
-            for (uint32_t j = 0; j < count_; ++j)
-                if (sample<false>(j, s)) emit(s);
-        } else {
-            for (uint32_t j = 0; j < count_; ++j)
-                if (sample<true>(j, s)) emit(s);
-        }
+        for (uint32_t j = 0; j < count_; ++j)
+            if (sample<false>(j, s)) emit(s);
     }
 
     // Writes light sample `index` to `s`; false, leaving `s` unspecified, when the sample cannot
     // contribute (light seen from behind, point below the geometric surface), so no ray is traced
-    // for it. `Folded`: the vertex has a shading normal, and the BSDF is FoldedDiffuseAtView's K.
+    // for it. `Folded`: the vertex has a shading normal, and the BSDF is folded_diffuse()'s K.
     // (An out-parameter, not std::optional: the 40-byte copy out of it was 4 % of the sample.)
     // Always inlined: g++ judges it too big, and as a call it spills and reloads the shared
     // state around every sample.
@@ -112,7 +110,7 @@ public:
         if (cos_x <= 0.0f || cos_y <= 0.0f) return false;
 
         // Folded, K stands for f * cos_x: its cosines are about the shading normal.
-        const glm::vec3 f = Folded ? bsdf_(wi, cos_x) : bsdf_.flat(wi, cos_x);
+        const glm::vec3 f = Folded ? folded_diffuse(bsdf_, n, at_.shading_normal, wi, cos_x) : bsdf_(wi, cos_x);
         const float cosine_x = Folded ? 1.0f : cos_x;
         const float geometry = cosine_x * cos_y / (dist2 * light.pdf_area * count_float_);
         s.ray.origin = at_.ray_origin;
@@ -127,11 +125,19 @@ public:
     }
 
 private:
+    // Out of line, so a flat scene's shade loop stays as small as it was.
+    template <typename Emit>
+    void sample_all_folded(Emit& emit) const {
+        ShadowRay s;
+        for (uint32_t j = 0; j < count_; ++j)
+            if (sample<true>(j, s)) emit(s);
+    }
+
     const Scene& scene_;
     LightSamplingPoint at_;
     glm::vec3 position_;  // the shading point, before the offset
     glm::vec3 throughput_;
-    FoldedDiffuseAtView bsdf_;
+    DiffuseBsdfAtView bsdf_;  // about the shading normal
     VertexRandom random_;
     uint32_t count_;
     float count_float_;
@@ -152,8 +158,11 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
     const VertexRandom random(key, bounce);
     const UniformPair direction = random.pair(dim::bsdf_u);
     const UniformPair choice_and_roulette = random.pair(dim::bsdf_choice);
-    const BsdfSample s = sample_bsdf(m, surface.normal, surface.shading_normal, d, direction.first, direction.second,
-                                     choice_and_roulette.first, scene.settings.accuracy.fresnel);
+    const BsdfSample s =
+        surface.smooth ? sample_bsdf_about_shading_normal(m, surface.normal, surface.shading_normal, d, direction.first,
+                                                          direction.second, choice_and_roulette.first, scene.settings.accuracy.fresnel)
+                       : sample_bsdf(m, surface.normal, d, direction.first, direction.second, choice_and_roulette.first,
+                                     scene.settings.accuracy.fresnel);
     if (!s.valid) return std::nullopt;
     PathContinuation next;
     next.throughput = throughput * s.weight;

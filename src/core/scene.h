@@ -47,8 +47,9 @@ struct SurfacePoint {
     // bits, on flat triangles and spheres.
     glm::vec3 shading_normal;
     uint32_t material;
-
-    bool has_shading_normal() const { return shading_normal != normal; }
+    // shading_normal != normal, decided once here: the vertex code takes the flat path, the one
+    // every scene without vertex normals runs, on a single flag test.
+    bool smooth;
 };
 
 inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
@@ -61,7 +62,12 @@ inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hi
         s.position = t.vertex0(hit.prim) + hit.u * t.edge1(hit.prim) + hit.v * t.edge2(hit.prim);
         s.error = triangle_point_error(t.vertex0(hit.prim), t.edge1(hit.prim), t.edge2(hit.prim), hit.u, hit.v);
         s.normal = t.normal(hit.prim);
-        s.shading_normal = scene.shading_normals.empty() ? s.normal : scene.shading_normals.at(hit.prim, hit.u, hit.v, s.normal);
+        s.shading_normal = s.normal;
+        s.smooth = false;
+        if (!scene.shading_normals.empty()) {
+            s.shading_normal = scene.shading_normals.at(hit.prim, hit.u, hit.v, s.normal);
+            s.smooth = s.shading_normal != s.normal;
+        }
         s.material = t.material[hit.prim];
     } else {
         const uint32_t i = hit.prim - triangle_count;
@@ -69,6 +75,7 @@ inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hi
         const float r = scene.spheres.radius[i];
         s.normal = glm::normalize(ray.origin + hit.t * ray.direction - c);
         s.shading_normal = s.normal;
+        s.smooth = false;
         // Projected back onto the sphere, for the same reason.
         s.position = c + r * s.normal;
         s.error = sphere_point_error(c, r, s.normal);

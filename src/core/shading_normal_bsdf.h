@@ -14,7 +14,7 @@
 //   Jacobian 1, so a direction w above the surface is reached from w and from w', and what the
 //   sampler estimates is the integral of L(w) against
 //       K(w) = f(w) max(0, ns.w) + f(w') max(0, ns.w'),
-//   the kernel the light samples use (FoldedDiffuseAtView). For Lambert, K integrates over the
+//   the kernel the light samples use (folded_diffuse). For Lambert, K integrates over the
 //   geometric hemisphere to rho/pi times the integral of max(0, ns.w) over the whole sphere,
 //   which is rho: no energy is lost or gained whatever ns is (tangent, tilted, opposite), so
 //   the white furnace holds exactly, and no direction ever leaves through the surface.
@@ -26,7 +26,8 @@
 //   silhouettes) scatters about ng, as a flat surface would. Weights are unchanged, so
 //   specular scattering neither gains nor loses energy.
 //
-// With ns == ng every function here is the flat one, bit for bit.
+// Only vertices whose shading normal differs from the geometric one (SurfacePoint::smooth) come
+// here; the others run the flat code, bit for bit as before.
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -45,32 +46,18 @@ inline glm::vec3 shading_normal_facing(const glm::vec3& n_shading, const glm::ve
 
 // The diffuse BSDF about a shading normal as the light samples see it: f * cos, with the part
 // of the cosine lobe below the geometric surface mirrored up through it (see the top of the
-// file). Both normals are unit and face wo's side.
-class FoldedDiffuseAtView {
-public:
-    FoldedDiffuseAtView(const Material& m, const glm::vec3& n_geom, const glm::vec3& n_shading, const glm::vec3& wo)
-        : about_shading_(m, n_shading, wo), n_geom_(n_geom), n_shading_(n_shading) {}
-
-    // K(wi) for wi above the geometric surface, given cos_geom = dot(n_geom, wi) > 0. Replaces
-    // f * cos_geom: the cosine is already in it.
-    glm::vec3 operator()(const glm::vec3& wi, float cos_geom) const {
-        const glm::vec3 mirrored = wi - (2.0f * cos_geom) * n_geom_;  // wi's preimage below the surface
-        return lobe(wi) + lobe(mirrored);
-    }
-
-    // f(wo, wi) when the shading normal is the geometric one: the flat BSDF, whose cosine the
-    // caller multiplies in.
-    glm::vec3 flat(const glm::vec3& wi, float cos_i) const { return about_shading_(wi, cos_i); }
-
-private:
-    glm::vec3 lobe(const glm::vec3& w) const {
-        const float cos_shading = glm::dot(n_shading_, w);
-        return cos_shading > 0.0f ? about_shading_.without_horizon(w, cos_shading) * cos_shading : glm::vec3(0.0f);
-    }
-
-    DiffuseBsdfAtView about_shading_;
-    glm::vec3 n_geom_, n_shading_;
-};
+// file). `about_shading` is the BSDF seen from wo about n_shading; both normals are unit and face
+// wo's side. For wi above the geometric surface, given cos_geom = dot(n_geom, wi) > 0; replaces
+// f * cos_geom: the cosine is already in it.
+inline glm::vec3 folded_diffuse(const DiffuseBsdfAtView& about_shading, const glm::vec3& n_geom, const glm::vec3& n_shading,
+                                const glm::vec3& wi, float cos_geom) {
+    auto lobe = [&](const glm::vec3& w) {
+        const float cos_shading = glm::dot(n_shading, w);
+        return cos_shading > 0.0f ? about_shading.without_horizon(w, cos_shading) * cos_shading : glm::vec3(0.0f);
+    };
+    const glm::vec3 mirrored = wi - (2.0f * cos_geom) * n_geom;  // wi's preimage below the surface
+    return lobe(wi) + lobe(mirrored);
+}
 
 // w if it is strictly on the side of the unit normal `side`, else w mirrored through the plane
 // of `side`; `ok` says whether the result is strictly on that side (false only for w exactly in
@@ -85,11 +72,13 @@ inline glm::vec3 mirrored_to_side(const glm::vec3& w, const glm::vec3& side, boo
     return m;
 }
 
-// sample_bsdf with a shading normal n_shading (unit, either orientation); n_geom as in
-// sample_bsdf. Identical to sample_bsdf(m, n_geom, d, ...) when n_shading == n_geom.
-inline BsdfSample sample_bsdf(const Material& m, const glm::vec3& n_geom, const glm::vec3& n_shading, const glm::vec3& d,
-                              float u0, float u1, float u_choice, FresnelModel fresnel = FresnelModel::schlick) {
-    if (n_shading == n_geom) return sample_bsdf(m, n_geom, d, u0, u1, u_choice, fresnel);
+// sample_bsdf about a shading normal n_shading (unit, either orientation; see the top of the
+// file); n_geom, d and the rest as in sample_bsdf. Out of line: only vertices with a shading
+// normal call it, and inlined next to sample_bsdf it made g++ stop inlining the whole path
+// continuation into the shade loop.
+[[gnu::noinline]] inline BsdfSample sample_bsdf_about_shading_normal(const Material& m, const glm::vec3& n_geom,
+                                                                     const glm::vec3& n_shading, const glm::vec3& d,
+                                                                     float u0, float u1, float u_choice, FresnelModel fresnel) {
     const bool front = glm::dot(d, n_geom) < 0.0f;
     const glm::vec3 ng = front ? n_geom : -n_geom;  // facing the incoming ray
     const glm::vec3 ns = shading_normal_facing(n_shading, ng);

@@ -3,12 +3,10 @@
 // some mesh of the scene has vertex normals: a flat scene stores nothing and surface_at() pays
 // one empty() test per hit.
 
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 namespace wt {
@@ -26,16 +24,9 @@ public:
     // and 2), in whichever orientation the vertex normals have; `geometric` for a flat triangle,
     // and where the vertex normals cancel (opposite normals at an edge's midpoint) or are not
     // finite, so no NaN comes out of here. Only valid when !empty().
-    glm::vec3 at(std::size_t i, float u, float v, const glm::vec3& geometric) const {
-        const uint32_t r = record_of_[i];
-        if (r == kFlat) return geometric;
-        const VertexNormals& n = records_[r];
-        const glm::vec3 blended = (1.0f - u - v) * n.n0 + u * n.n1 + v * n.n2;
-        const float length2 = glm::dot(blended, blended);
-        // Below 1e-12 the direction is the rounding noise of the cancellation.
-        if (!(length2 > 1e-12f) || !std::isfinite(length2)) return geometric;
-        return blended / std::sqrt(length2);
-    }
+    // Out of line: inlined into surface_at() it made g++ stop inlining surface_at() itself,
+    // which costs every flat scene.
+    glm::vec3 at(std::size_t i, float u, float v, const glm::vec3& geometric) const;
 
 private:
     static constexpr uint32_t kFlat = ~uint32_t(0);
