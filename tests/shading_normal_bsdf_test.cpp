@@ -83,6 +83,11 @@ double folded_kernel(const Material& m, const glm::vec3& ng, const glm::vec3& ns
     return double(folded_diffuse(about_shading, ng, ns, wi, glm::dot(ng, wi)).x);
 }
 
+// The same about kGeometric, as a function of wi, for HemisphereGrid::integrate.
+auto folded_kernel_of(const Material& m, const glm::vec3& ns, const glm::vec3& wo) {
+    return [=](const glm::vec3& wi) { return folded_kernel(m, kGeometric, ns, wo, wi); };
+}
+
 TEST(FoldedDiffuse, LambertIntegratesToRhoForAnyShadingNormal) {
     const Material m = diffuse(MaterialType::lambertian, 0.7f);
     const glm::vec3 wo = tilted(kGeometric, 0.6, 2.0);
@@ -91,7 +96,7 @@ TEST(FoldedDiffuse, LambertIntegratesToRhoForAnyShadingNormal) {
     // turned to the viewer's side as the renderer turns them.
     for (double degrees : {0.0, 10.0, 45.0, 80.0, 89.9, 90.0, 100.0, 150.0, 180.0}) {
         const glm::vec3 ns = shading_normal_facing(tilted(kGeometric, degrees * M_PI / 180.0, 0.7), kGeometric);
-        const double albedo = sum(grid.integrate([&](const glm::vec3& w) { return folded_kernel(m, kGeometric, ns, wo, w); }, 400));
+        const double albedo = sum(grid.integrate(folded_kernel_of(m, ns, wo), 400));
         EXPECT_NEAR(albedo, 0.7, 2e-3) << degrees << " degrees";
     }
 }
@@ -124,7 +129,7 @@ TEST(FoldedDiffuse, OrenNayarNeverReflectsMoreThanRhoAndNeverGoesBlack) {
             for (double view_degrees : {10.0, 60.0, 85.0}) {
                 // Azimuth pi: the viewer leans away from the shading normal, below it for large angles.
                 const glm::vec3 wo = tilted(kGeometric, view_degrees * M_PI / 180.0, M_PI);
-                const double albedo = sum(grid.integrate([&](const glm::vec3& w) { return folded_kernel(m, kGeometric, ns, wo, w); }, 300));
+                const double albedo = sum(grid.integrate(folded_kernel_of(m, ns, wo), 300));
                 const std::string where = "sigma " + std::to_string(sigma) + " tilt " + std::to_string(tilt_degrees) + " view " +
                                           std::to_string(view_degrees) + (glm::dot(ns, wo) < 0.0f ? " (viewer below ns)" : "");
                 EXPECT_LE(albedo, 0.8 + 2e-3) << where;
@@ -179,10 +184,11 @@ TEST(FoldedDiffuseSampling, LambertDrawsTheKernelTheLightSamplesUse) {
         const glm::vec3 d = -tilted(kGeometric, 0.9, 4.0);
         const SampledHistogram h = sample_histogram(m, kGeometric, ns_raw, d, n, seed++, grid);
         EXPECT_LE(h.invalid, n / 10000);
-        std::vector<double> expected = grid.integrate([&](const glm::vec3& w) { return folded_kernel(m, kGeometric, ns, -d, w) / 0.7; }, 8);
-        for (double& e : expected) e *= double(n - h.invalid);
+        std::vector<double> expected = grid.integrate(folded_kernel_of(m, ns, -d), 8);
+        for (double& e : expected) e *= double(n - h.invalid) / 0.7;  // K / rho is the density
         const test::ChiSquareResult r = test::chi_square_test(h.counts, expected);
-        std::printf("lambert about ns %5.1f deg: chi2 %8.2f dof %d p %.4g\n", degrees, r.statistic, r.degrees_of_freedom, r.p_value);
+        std::printf("lambert about ns %5.1f deg: chi2 %8.2f dof %d p %.4g\n", degrees, r.statistic, r.degrees_of_freedom,
+                    r.p_value);
         EXPECT_GT(r.p_value, kPerTestAlpha) << degrees << " degrees";
         // Lambert's weight is rho, every time.
         for (std::size_t c = 0; c < h.counts.size(); ++c) EXPECT_NEAR(h.weight_sums[c], 0.7 * h.counts[c], 1e-3 * h.counts[c]);
@@ -224,7 +230,7 @@ TEST(FoldedDiffuseSampling, OrenNayarWeightsIntegrateTheKernelCellByCell) {
         const glm::vec3 ns = tilted(kGeometric, c.tilt_degrees * M_PI / 180.0, 0.0);
         const glm::vec3 wo = tilted(kGeometric, c.view_degrees * M_PI / 180.0, M_PI);  // below ns for the first case
         const SampledHistogram h = sample_histogram(m, kGeometric, ns, -wo, n, seed++, grid);
-        const std::vector<double> expected = grid.integrate([&](const glm::vec3& w) { return folded_kernel(m, kGeometric, ns, wo, w); }, 8);
+        const std::vector<double> expected = grid.integrate(folded_kernel_of(m, ns, wo), 8);
         // Cells with few samples (behind a steep ns, where K is near zero) are pooled into one.
         double chi2 = 0.0, total = 0.0, pooled_mean = 0.0, pooled_expected = 0.0, pooled_variance = 0.0;
         int cells = 0;

@@ -96,7 +96,8 @@ struct BsdfSample {
 
 // A cosine-weighted direction about n (unit, facing the incoming direction d) and its weight
 // f * cos / pdf for a diffuse material. Invalid when rounding puts it on n's horizon.
-[[gnu::always_inline]] inline BsdfSample sample_diffuse(const Material& m, const glm::vec3& n, const glm::vec3& d, float u0, float u1) {
+[[gnu::always_inline]] inline BsdfSample sample_diffuse(const Material& m, const glm::vec3& n, const glm::vec3& d, float u0,
+                                                        float u1) {
     BsdfSample s;
     const glm::vec3 local = sample_cosine_hemisphere(u0, u1);
     s.direction = glm::normalize(Frame(n).to_world(local));
@@ -149,8 +150,8 @@ struct BsdfSample {
 // Inside/outside of glass is decided by the geometric normal: spheres' normals point outward.
 // Out of line, as g++ chose before there was a second sampler next to it: inlined into the path
 // continuation it costs the shade loop more than the call.
-[[gnu::noinline]] inline BsdfSample sample_bsdf(const Material& m, const glm::vec3& n_geom, const glm::vec3& d, float u0, float u1,
-                                                float u_choice, FresnelModel fresnel = FresnelModel::schlick) {
+[[gnu::noinline]] inline BsdfSample sample_bsdf(const Material& m, const glm::vec3& n_geom, const glm::vec3& d, float u0,
+                                                float u1, float u_choice, FresnelModel fresnel = FresnelModel::schlick) {
     const bool front = glm::dot(d, n_geom) < 0.0f;
     const glm::vec3 n = front ? n_geom : -n_geom;  // facing the incoming ray
     if (m.is_specular()) return sample_specular(m, n, front, d, u_choice, fresnel);

@@ -78,12 +78,17 @@ public:
 
     // Every light sample of the vertex, in index order; emit(const ShadowRay&) gets each one that
     // can contribute. One loop here rather than one call per sample in the caller: the shared
-    // state stays in registers across the samples.
-    // The choice between the flat and the folded BSDF is made once per vertex, here.
+    // state stays in registers across the samples. Flat or folded BSDF is chosen once, here.
+    // (Not an out-of-line call for the folded loop: this object's address would escape into it,
+    // and g++ then reloads the shared state around every flat sample too.)
     template <typename Emit>
     void sample_all(Emit&& emit) const {
-        if (at_.smooth) return sample_all_folded(emit);
         ShadowRay s;
+        if (at_.smooth) {
+            for (uint32_t j = 0; j < count_; ++j)
+                if (sample<true>(j, s)) emit(s);
+            return;
+        }
         for (uint32_t j = 0; j < count_; ++j)
             if (sample<false>(j, s)) emit(s);
     }
@@ -125,14 +130,6 @@ public:
     }
 
 private:
-    // Out of line, so a flat scene's shade loop stays as small as it was.
-    template <typename Emit>
-    void sample_all_folded(Emit& emit) const {
-        ShadowRay s;
-        for (uint32_t j = 0; j < count_; ++j)
-            if (sample<true>(j, s)) emit(s);
-    }
-
     const Scene& scene_;
     LightSamplingPoint at_;
     glm::vec3 position_;  // the shading point, before the offset
@@ -158,11 +155,12 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
     const VertexRandom random(key, bounce);
     const UniformPair direction = random.pair(dim::bsdf_u);
     const UniformPair choice_and_roulette = random.pair(dim::bsdf_choice);
-    const BsdfSample s =
-        surface.smooth ? sample_bsdf_about_shading_normal(m, surface.normal, surface.shading_normal, d, direction.first,
-                                                          direction.second, choice_and_roulette.first, scene.settings.accuracy.fresnel)
-                       : sample_bsdf(m, surface.normal, d, direction.first, direction.second, choice_and_roulette.first,
-                                     scene.settings.accuracy.fresnel);
+    const FresnelModel fresnel = scene.settings.accuracy.fresnel;
+    const BsdfSample s = surface.smooth ? sample_bsdf_about_shading_normal(m, surface.normal, surface.shading_normal, d,
+                                                                           direction.first, direction.second,
+                                                                           choice_and_roulette.first, fresnel)
+                                        : sample_bsdf(m, surface.normal, d, direction.first, direction.second,
+                                                      choice_and_roulette.first, fresnel);
     if (!s.valid) return std::nullopt;
     PathContinuation next;
     next.throughput = throughput * s.weight;
