@@ -5,9 +5,7 @@
 // smooth-shaded mesh; no NaN or Inf with adversarial normals on every material; both
 // integrators give the same bits on smooth scenes.
 
-#include <array>
 #include <cmath>
-#include <map>
 #include <random>
 #include <utility>
 #include <vector>
@@ -22,36 +20,7 @@
 namespace wt {
 namespace {
 
-// A unit icosphere: the icosahedron, each triangle split in four `subdivisions` times, vertices
-// pushed out to the sphere. Wound counter-clockwise seen from outside.
-TriangleMesh icosphere(int subdivisions) {
-    const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    TriangleMesh m;
-    for (const glm::vec3& v : {glm::vec3(-1, t, 0), glm::vec3(1, t, 0), glm::vec3(-1, -t, 0), glm::vec3(1, -t, 0),
-                               glm::vec3(0, -1, t), glm::vec3(0, 1, t), glm::vec3(0, -1, -t), glm::vec3(0, 1, -t),
-                               glm::vec3(t, 0, -1), glm::vec3(t, 0, 1), glm::vec3(-t, 0, -1), glm::vec3(-t, 0, 1)})
-        m.vertices.push_back(glm::normalize(v));
-    m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                   {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-    for (int s = 0; s < subdivisions; ++s) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
-        auto midpoint = [&](uint32_t a, uint32_t b) {
-            const auto key = std::minmax(a, b);
-            const auto found = midpoints.find(key);
-            if (found != midpoints.end()) return found->second;
-            m.vertices.push_back(glm::normalize(m.vertices[a] + m.vertices[b]));
-            return midpoints[key] = uint32_t(m.vertices.size() - 1);
-        };
-        std::vector<std::array<uint32_t, 3>> finer;
-        for (const auto& [a, b, c] : m.triangles) {
-            const uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
-            finer.push_back({a, ab, ca}), finer.push_back({b, bc, ab}), finer.push_back({c, ca, bc}), finer.push_back({ab, bc, ca});
-        }
-        m.triangles = finer;
-    }
-    return m;
-}
+using test::icosphere;
 
 // Vertex normals from the kind test wants; the renderer must cope with all of them.
 enum class Normals { none, outward, inward, random, tangent };
