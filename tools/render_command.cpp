@@ -109,6 +109,10 @@ int replay_sample(const Scene& scene, const RenderOptions& options, const DebugS
         print_vec(std::cout, v.position);
         std::cout << " normal ";
         print_vec(std::cout, v.normal);
+        if (v.shading_normal != v.normal) {
+            std::cout << " shading normal ";
+            print_vec(std::cout, v.shading_normal);
+        }
         std::cout << "\n    throughput ";
         print_vec(std::cout, v.throughput);
         std::cout << " emission added ";

@@ -26,8 +26,8 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
         if (!hit.found()) break;  // no environment light
         const SurfacePoint surface = surface_at(scene, ray, hit);
         const Material& m = scene.materials[surface.material];
-        PathVertexRecord vertex{bounce, hit, surface.position, surface.normal, surface.material, throughput,
-                                glm::vec3(0.0f), 0, 0, glm::vec3(0.0f)};
+        PathVertexRecord vertex{bounce, hit, surface.position, surface.normal, surface.shading_normal, surface.material,
+                                throughput, glm::vec3(0.0f), 0, 0, glm::vec3(0.0f)};
 
         if (count_emission) {
             vertex.emission_added = throughput * emitted_towards(m, surface.normal, ray.direction);

@@ -20,7 +20,7 @@ namespace wt {
 struct PathVertexRecord {
     uint32_t bounce;
     Hit hit;
-    glm::vec3 position, normal;
+    glm::vec3 position, normal, shading_normal;  // the shading normal equals `normal` when flat
     uint32_t material;
     glm::vec3 throughput;        // arriving at this vertex
     glm::vec3 emission_added;
