@@ -118,11 +118,14 @@ private:
 
     uint32_t emit_leaf(const BinaryNode& b) {
         const BvhLeafKind kind = BvhLeafKind(refs_[b.first].kind);
-        const uint32_t first = kind == BvhLeafKind::sphere ? primitives_.sphere_count() : primitives_.planar_count();
+        const bool sphere = kind == BvhLeafKind::sphere;
+        const uint32_t first = sphere ? primitives_.sphere_count : primitives_.planar_count;
         if (first + b.count > kBvhMaxLeafPrimitives)
             throw std::invalid_argument("BVH: more than " + std::to_string(kBvhMaxLeafPrimitives) +
                                         " primitives of one kind; the node format cannot index them");
-        for (uint32_t i = b.first; i < b.first + b.count; ++i) primitives_.append(scene_, refs_[i].id);
+        uint32_t ids[kBvhMaxLeafSize];
+        for (uint32_t i = 0; i < b.count; ++i) ids[i] = refs_[b.first + i].id;
+        primitives_.append_leaf(scene_, ids, b.count, sphere);
         ++leaf_count;
         leaf_area_sum += double(b.box.half_area()) * b.count;
         return kBvhLeafBit | (uint32_t(kind) << kBvhKindShift) | ((b.count - 1) << kBvhCountShift) | first;
@@ -171,7 +174,7 @@ Bvh build_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool* po
     bvh.node_width_ = options.node_width;
     bvh.primitives_.test = scene.settings.accuracy.triangles;
     std::vector<PrimRef> refs = primitive_refs(scene);
-    bvh.primitives_.reserve(scene, refs.size());
+    bvh.primitives_.reserve(std::min(refs.size(), scene.triangles.size()), scene.spheres.size());
     if (!refs.empty()) {
         SahSettings sah;
         sah.max_leaf_size = uint32_t(options.max_leaf_size);
@@ -198,10 +201,9 @@ BvhView bvh_view(const Bvh& bvh) {
     v.nodes = bvh.node_width_ == 4 ? static_cast<const void*>(bvh.nodes4_.data()) : static_cast<const void*>(bvh.nodes8_.data());
     v.root = bvh.root_;
     v.max_depth = bvh.stats_.max_depth;
-    v.planar = bvh.primitives_.planar_view();
-    v.spheres = bvh.primitives_.sphere_view();
-    v.planar_prim = bvh.primitives_.planar_prim.data();
-    v.sphere_prim = bvh.primitives_.sphere_prim.data();
+    v.planar = bvh.primitives_.planar.data();
+    v.planar_rows = bvh.primitives_.planar_rows();
+    v.spheres = bvh.primitives_.spheres.data();
     return v;
 }
 
