@@ -12,7 +12,7 @@
 namespace wt {
 namespace {
 
-constexpr const char* kShapeTypes = "quad, mesh, sphere";
+constexpr const char* kShapeTypes = "quad, mesh, sphere, mesh_file";
 
 std::vector<glm::vec3> read_vertices(const Reader& in, const Json& j, const std::string& path) {
     in.expect_array(j, path);
@@ -98,6 +98,7 @@ void read_shape(const Reader& in, const Json& j, const std::string& path, SceneD
         in.fail(member_path(path, "type"), std::string("required key is missing (one of ") + kShapeTypes + ")");
     const std::string type_path = member_path(path, "type");
     const std::string type = in.text(j.at("type"), type_path);
+    if (type == "mesh_file") return read_mesh_file_shape(in, j, path, scene);
     const std::string context = " for a " + type;
     if (type == "quad") in.check_keys(j, path, {"type", "vertices", "material"}, context);
     else if (type == "mesh") in.check_keys(j, path, {"type", "vertices", "triangles", "material"}, context);
