@@ -75,6 +75,9 @@ ImportedMesh read_obj_file(const std::string& path) {
                                      (base_dir.empty() ? std::string("./") : base_dir + "/").c_str(),
                                      /*triangulate=*/false, /*default_vcols_fallback=*/false);
     if (!ok) throw MeshFileError(path + ": " + first_line(err.empty() ? warn : err));
+    // tinyobjloader drops such a face with this warning, and without its line.
+    if (warn.find("Degenerated face found") != std::string::npos)
+        throw MeshFileError(path + ": a face has fewer than 3 vertices (tinyobjloader does not say on which line)");
 
     ImportedMesh mesh;
     const std::size_t vertex_count = attrib.vertices.size() / 3;
@@ -110,7 +113,6 @@ ImportedMesh read_obj_file(const std::string& path) {
             const std::size_t n = shape.mesh.num_face_vertices[f];
             const std::string face = "face " + std::to_string(face_number) +
                                      (shape.name.empty() ? "" : " (in group \"" + shape.name + "\")");
-            if (n < 3) throw MeshFileError(path + ": " + face + ": a face needs at least 3 vertices, got " + std::to_string(n));
             polygon.clear();
             for (std::size_t k = 0; k < n; ++k, ++corner) {
                 const tinyobj::index_t& index = shape.mesh.indices[corner];
