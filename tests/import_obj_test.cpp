@@ -145,22 +145,34 @@ TEST_F(ObjImport, FacesWithoutAMaterialGetTheFileDefault) {
 
 TEST_F(ObjImport, IndexOutOfRange) {
     write("bad.obj", kPentagon + "f 1 2 3\nf 1 2 6\n");
-    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 2: vertex index out of range (resolves to 6; the file has 5 vertices)");
+    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 2: vertex index 6 out of range (the file has 5 vertices)");
 }
 
 TEST_F(ObjImport, NegativeIndexBeforeTheFirstVertex) {
     write("bad.obj", kPentagon + "f -1 -2 -6\n");
-    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 1: vertex index out of range (resolves to 0;");
+    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 1: vertex index -6 reaches before the first (5 defined so far)");
 }
 
-TEST_F(ObjImport, ZeroIndexNamesTheLine) {
-    write("bad.obj", kPentagon + "\nf 0 1 2\n");
-    expect_mesh_error(error_for("bad.obj"), "bad.obj", "line 7");
+TEST_F(ObjImport, FacesMayNameVerticesDefinedLater) {
+    write("later.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n");
+    EXPECT_EQ(load_file("later.obj").meshes[0].triangles, (Triangles{{0, 1, 2}}));
+    write("never.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\n");
+    expect_mesh_error(error_for("never.obj"), "never.obj", "face 1: vertex index 3 out of range (the file has 2 vertices)");
+}
+
+TEST_F(ObjImport, NormalIndexOutOfRange) {
+    write("bad.obj", kPentagon + "vn 0 0 1\nf 1//1 2//1 3//2\n");
+    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 1: normal index 2 out of range (1 normals defined so far)");
+}
+
+TEST_F(ObjImport, ZeroIndex) {
+    write("bad.obj", kPentagon + "\nf 1 2 3\nf 0 1 2\n");
+    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 2: vertex index 0 (OBJ counts from 1)");
 }
 
 TEST_F(ObjImport, FaceWithTwoVertices) {
     write("bad.obj", kPentagon + "f 1 2 3\ng two\nf 1 2\n");
-    expect_mesh_error(error_for("bad.obj"), "bad.obj", "a face has fewer than 3 vertices");
+    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 2 (in group \"two\"): a face needs at least 3 vertices, got 2");
 }
 
 TEST_F(ObjImport, InfiniteVertex) {

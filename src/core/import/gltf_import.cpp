@@ -241,15 +241,19 @@ ImportedMesh read_gltf_file(const std::string& path) {
     loader.SetImageLoader(skip_image, nullptr);
     tinygltf::Model model;
     std::string err, warn;
-    const MappedFile file(path);
-    if (file.size() > UINT32_MAX) throw MeshFileError(path + ": larger than 4 GiB, more than glTF's loader takes");
-    const std::string base_dir = std::filesystem::path(path).parent_path().string();
-    // The content decides, not the extension: a .glb starts with the magic "glTF".
-    const bool binary = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
-    const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, file.data(), unsigned(file.size()), base_dir)
-                           : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(file.data()),
-                                                        unsigned(file.size()), base_dir);
-    if (!ok) throw MeshFileError(path + ": " + first_line(err.empty() ? warn : err));
+    {
+        // Unmapped before the accessors are read: the model holds its own copy of the buffers.
+        const MappedFile file(path);
+        if (file.size() > UINT32_MAX) throw MeshFileError(path + ": larger than 4 GiB, more than glTF's loader takes");
+        const std::string base_dir = std::filesystem::path(path).parent_path().string();
+        // The content decides, not the extension: a .glb starts with the magic "glTF".
+        const bool binary = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
+        const bool ok =
+            binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, file.data(), unsigned(file.size()), base_dir)
+                   : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(file.data()),
+                                                unsigned(file.size()), base_dir);
+        if (!ok) throw MeshFileError(path + ": " + first_line(err.empty() ? warn : err));
+    }
     ImportedMesh mesh = GltfReader(path, model).read();
     return mesh;
 }

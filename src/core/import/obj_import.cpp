@@ -1,10 +1,13 @@
-// Wavefront OBJ and its MTL materials, parsed by tinyobjloader (see README.md, Dependencies).
-// tinyobjloader names lines only for the few errors it raises itself; what it accepts is then
-// checked here, where a vertex can be named by its number (the n-th "v" line) and a face by its
-// number in the file, but not by its line.
+// Wavefront OBJ and its MTL materials, parsed by tinyobjloader (see README.md, Dependencies)
+// through its streaming callbacks: each "v" and "f" line reaches us as it is read, so nothing
+// but our own mesh is built, and indices are resolved and checked here. tinyobjloader does not
+// pass line numbers to callbacks, so a vertex is named by its number (the n-th "v" line) and a
+// face by its number in the file (the n-th "f" line).
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <unordered_map>
 
 #include <tiny_obj_loader.h>
@@ -22,125 +25,166 @@ std::string first_line(const std::string& text) {
     return s;
 }
 
-// One output vertex per distinct (position, normal) pair a face corner names. A position keeps
-// its index and the file's order when its corners agree on the normal (the common case), and
-// is copied to the end once per other normal it is given.
-class CornerVertices {
-public:
-    CornerVertices(ImportedMesh& mesh, const tinyobj::attrib_t& attrib, bool with_normals)
-        : mesh_(mesh), attrib_(attrib), with_normals_(with_normals),
-          normal_of_(with_normals ? mesh.positions.size() : 0, -1) {
-        if (with_normals) mesh_.normals.assign(mesh.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+// What the callbacks build. A callback cannot stop the parse, so the first problem is kept and
+// thrown once tinyobjloader returns.
+struct ObjBuilder {
+    ImportedMesh mesh;
+    std::vector<glm::vec3> file_normals;
+    std::vector<int32_t> corner_normals;  // per triangle corner, an index into file_normals or -1
+    std::vector<tinyobj::material_t> materials;
+    uint32_t material = ImportedMesh::kNoMaterial;
+    bool any_material = false;
+    std::string group;
+    uint64_t faces = 0;
+    // Positive indices may name vertices defined further down; those are checked at the end.
+    std::vector<std::pair<uint64_t, int64_t>> forward_references;  // (face, 1-based index)
+    std::string problem;
+
+    std::string face_name() const {
+        return "face " + std::to_string(faces) + (group.empty() ? "" : " (in group \"" + group + "\")");
     }
 
-    uint32_t vertex(int position, int normal) {
-        if (!with_normals_) return uint32_t(position);
-        int& assigned = normal_of_[std::size_t(position)];
-        if (assigned < 0 || assigned == normal) {
-            assigned = normal;
-            mesh_.normals[std::size_t(position)] = normal_vector(normal);
-            return uint32_t(position);
+    void fail(const std::string& what) {
+        if (problem.empty()) problem = what;
+    }
+
+    // OBJ counts from 1; a negative index counts back from the last element defined so far.
+    // Returns the 0-based index, or -1 after recording the problem.
+    int64_t resolve(int raw, std::size_t defined, const char* what) {
+        if (raw == 0) {
+            fail(face_name() + ": " + what + " index 0 (OBJ counts from 1)");
+            return -1;
         }
-        const uint64_t key = (uint64_t(uint32_t(position)) << 32) | uint32_t(normal);
-        const auto [it, inserted] = split_.try_emplace(key, uint32_t(mesh_.positions.size()));
-        if (inserted) {
-            mesh_.positions.push_back(mesh_.positions[std::size_t(position)]);
-            mesh_.normals.push_back(normal_vector(normal));
+        const int64_t index = raw > 0 ? int64_t(raw) - 1 : int64_t(defined) + raw;
+        if (index < 0)
+            fail(face_name() + ": " + what + " index " + std::to_string(raw) + " reaches before the first (" +
+                 std::to_string(defined) + " defined so far)");
+        return index;
+    }
+
+    void face(const tinyobj::index_t* corners, int count) {
+        ++faces;
+        if (!problem.empty()) return;
+        if (count < 3) return fail(face_name() + ": a face needs at least 3 vertices, got " + std::to_string(count));
+        polygon_.clear();
+        polygon_normals_.clear();
+        for (int k = 0; k < count; ++k) {
+            const int64_t v = resolve(corners[k].vertex_index, mesh.positions.size(), "vertex");
+            if (v < 0) return;
+            if (uint64_t(v) >= mesh.positions.size()) forward_references.push_back({faces, v + 1});
+            polygon_.push_back(uint32_t(v));
+            int64_t n = -1;
+            if (corners[k].normal_index != 0) {
+                n = resolve(corners[k].normal_index, file_normals.size(), "normal");
+                if (n < 0) return;
+                if (uint64_t(n) >= file_normals.size())
+                    return fail(face_name() + ": normal index " + std::to_string(corners[k].normal_index) +
+                                " out of range (" + std::to_string(file_normals.size()) + " normals defined so far)");
+            }
+            polygon_normals_.push_back(int32_t(n));
         }
-        return it->second;
+        for (std::size_t k = 1; k + 1 < polygon_normals_.size(); ++k)
+            corner_normals.insert(corner_normals.end(), {polygon_normals_[0], polygon_normals_[k], polygon_normals_[k + 1]});
+        append_polygon_fan(polygon_, mesh.triangles);
+        mesh.triangle_materials.resize(mesh.triangles.size(), material);
     }
 
 private:
-    glm::vec3 normal_vector(int normal) const {
-        const float* n = &attrib_.normals[3 * std::size_t(normal)];
-        return {n[0], n[1], n[2]};
-    }
-
-    ImportedMesh& mesh_;
-    const tinyobj::attrib_t& attrib_;
-    bool with_normals_;
-    std::vector<int> normal_of_;
-    std::unordered_map<uint64_t, uint32_t> split_;
+    std::vector<uint32_t> polygon_;
+    std::vector<int32_t> polygon_normals_;
 };
+
+tinyobj::callback_t obj_callbacks() {
+    tinyobj::callback_t cb;
+    cb.vertex_cb = [](void* user, float x, float y, float z, float) {
+        ObjBuilder& b = *static_cast<ObjBuilder*>(user);
+        b.mesh.positions.push_back({x, y, z});
+        if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
+            b.fail("vertex " + std::to_string(b.mesh.positions.size()) + " (the " + std::to_string(b.mesh.positions.size()) +
+                   "th \"v\" line) is not finite");
+    };
+    cb.normal_cb = [](void* user, float x, float y, float z) {
+        ObjBuilder& b = *static_cast<ObjBuilder*>(user);
+        b.file_normals.push_back({x, y, z});
+        if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
+            b.fail("normal " + std::to_string(b.file_normals.size()) + " (\"vn\") is not finite");
+    };
+    cb.index_cb = [](void* user, tinyobj::index_t* corners, int count) { static_cast<ObjBuilder*>(user)->face(corners, count); };
+    cb.usemtl_cb = [](void* user, const char* name, int id) {
+        ObjBuilder& b = *static_cast<ObjBuilder*>(user);
+        b.material = id >= 0 ? uint32_t(id) : ImportedMesh::kNoMaterial;
+        b.any_material |= id >= 0;
+        if (id < 0) b.mesh.notes.push_back("usemtl " + std::string(name) + ": no such material in the .mtl files");
+    };
+    cb.mtllib_cb = [](void* user, const tinyobj::material_t* materials, int count) {
+        static_cast<ObjBuilder*>(user)->materials.assign(materials, materials + count);
+    };
+    cb.group_cb = [](void* user, const char** names, int count) {
+        static_cast<ObjBuilder*>(user)->group = count > 0 ? names[0] : "";
+    };
+    cb.object_cb = [](void* user, const char* name) { static_cast<ObjBuilder*>(user)->group = name; };
+    return cb;
+}
+
+// One output vertex per distinct (position, normal) pair a face corner names. A position keeps
+// its index and the file's order when its corners agree on the normal (the common case), and
+// is copied to the end once per other normal it is given.
+void split_vertices_by_normal(ObjBuilder& b) {
+    ImportedMesh& mesh = b.mesh;
+    std::vector<int32_t> normal_of(mesh.positions.size(), -1);
+    std::unordered_map<uint64_t, uint32_t> copies;
+    mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            uint32_t& v = mesh.triangles[t][k];
+            const int32_t n = b.corner_normals[3 * t + k];
+            if (normal_of[v] < 0 || normal_of[v] == n) {
+                normal_of[v] = n;
+                mesh.normals[v] = b.file_normals[std::size_t(n)];
+                continue;
+            }
+            const auto [it, inserted] = copies.try_emplace((uint64_t(v) << 32) | uint32_t(n), uint32_t(mesh.positions.size()));
+            if (inserted) {
+                mesh.positions.push_back(mesh.positions[v]);
+                mesh.normals.push_back(b.file_normals[std::size_t(n)]);
+            }
+            v = it->second;
+        }
+    }
+}
 
 }  // namespace
 
 ImportedMesh read_obj_file(const std::string& path) {
-    tinyobj::attrib_t attrib;
-    std::vector<tinyobj::shape_t> shapes;
-    std::vector<tinyobj::material_t> materials;
-    std::string warn, err;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw MeshFileError(path + ": cannot open");
     const std::string base_dir = std::filesystem::path(path).parent_path().string();
-    const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, path.c_str(),
-                                     (base_dir.empty() ? std::string("./") : base_dir + "/").c_str(),
-                                     /*triangulate=*/false, /*default_vcols_fallback=*/false);
-    if (!ok) throw MeshFileError(path + ": " + first_line(err.empty() ? warn : err));
-    // tinyobjloader drops such a face with this warning, and without its line.
-    if (warn.find("Degenerated face found") != std::string::npos)
-        throw MeshFileError(path + ": a face has fewer than 3 vertices (tinyobjloader does not say on which line)");
-
-    ImportedMesh mesh;
-    const std::size_t vertex_count = attrib.vertices.size() / 3;
-    const std::size_t normal_count = attrib.normals.size() / 3;
-    mesh.positions.resize(vertex_count);
-    for (std::size_t v = 0; v < vertex_count; ++v) {
-        const glm::vec3 p(attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]);
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            throw MeshFileError(path + ": vertex " + std::to_string(v + 1) + " (the " + std::to_string(v + 1) +
-                                "th \"v\" line) is not finite");
-        mesh.positions[v] = p;
-    }
-    std::vector<float>().swap(attrib.vertices);
-    for (float n : attrib.normals)
-        if (!std::isfinite(n)) throw MeshFileError(path + ": a vertex normal (\"vn\") is not finite");
+    tinyobj::MaterialFileReader mtl_reader(base_dir.empty() ? std::string("./") : base_dir + "/");
+    ObjBuilder b;
+    std::string warn, err;
+    const bool ok = tinyobj::LoadObjWithCallback(in, obj_callbacks(), &b, &mtl_reader, &warn, &err);
+    if (!ok || !err.empty()) throw MeshFileError(path + ": " + first_line(err.empty() ? warn : err));
+    if (in.bad()) throw MeshFileError(path + ": read error");
+    if (!b.problem.empty()) throw MeshFileError(path + ": " + b.problem);
+    for (const auto& [face, index] : b.forward_references)
+        if (uint64_t(index) > b.mesh.positions.size())
+            throw MeshFileError(path + ": face " + std::to_string(face) + ": vertex index " + std::to_string(index) +
+                                " out of range (the file has " + std::to_string(b.mesh.positions.size()) + " vertices)");
+    if (warn.find("Failed to load material file") != std::string::npos) b.mesh.notes.push_back(first_line(warn));
 
     // File normals only if every face corner names one: a mesh half smooth and half flat would
     // have no consistent shading normal to give its flat half.
-    bool every_corner_has_normal = normal_count > 0;
-    for (const tinyobj::shape_t& shape : shapes)
-        for (const tinyobj::index_t& corner : shape.mesh.indices) every_corner_has_normal &= corner.normal_index >= 0;
-    if (normal_count > 0 && !every_corner_has_normal)
-        mesh.notes.push_back("some faces name no vertex normal (\"vn\"): the file's normals are not used");
+    const bool every_corner_has_normal =
+        !b.file_normals.empty() && std::find(b.corner_normals.begin(), b.corner_normals.end(), -1) == b.corner_normals.end();
+    if (!b.file_normals.empty() && !every_corner_has_normal)
+        b.mesh.notes.push_back("some faces name no vertex normal (\"vn\"): the file's normals are not used");
+    if (every_corner_has_normal) split_vertices_by_normal(b);
+    std::vector<int32_t>().swap(b.corner_normals);
 
-    CornerVertices corners(mesh, attrib, every_corner_has_normal);
-    bool any_material = false;
-    std::size_t face_number = 0;  // 1-based, over the whole file, for messages
-    std::vector<uint32_t> polygon;
-    for (const tinyobj::shape_t& shape : shapes) {
-        std::size_t corner = 0;
-        for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
-            ++face_number;
-            const std::size_t n = shape.mesh.num_face_vertices[f];
-            const std::string face = "face " + std::to_string(face_number) +
-                                     (shape.name.empty() ? "" : " (in group \"" + shape.name + "\")");
-            polygon.clear();
-            for (std::size_t k = 0; k < n; ++k, ++corner) {
-                const tinyobj::index_t& index = shape.mesh.indices[corner];
-                // tinyobjloader resolves negative (relative) indices; one reaching before the
-                // first vertex comes out negative.
-                if (index.vertex_index < 0 || std::size_t(index.vertex_index) >= vertex_count)
-                    throw MeshFileError(path + ": " + face + ": vertex index out of range (resolves to " +
-                                        std::to_string(index.vertex_index + 1) + "; the file has " +
-                                        std::to_string(vertex_count) + " vertices)");
-                if (every_corner_has_normal && std::size_t(index.normal_index) >= normal_count)
-                    throw MeshFileError(path + ": " + face + ": normal index out of range (resolves to " +
-                                        std::to_string(index.normal_index + 1) + "; the file has " +
-                                        std::to_string(normal_count) + " normals)");
-                polygon.push_back(corners.vertex(index.vertex_index, index.normal_index));
-            }
-            append_polygon_fan(polygon, mesh.triangles);
-            const int material = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
-            any_material |= material >= 0;
-            mesh.triangle_materials.resize(mesh.triangles.size(),
-                                           material >= 0 ? uint32_t(material) : ImportedMesh::kNoMaterial);
-        }
-    }
-    if (!any_material) mesh.triangle_materials.clear();
-    for (const tinyobj::material_t& m : materials) mesh.materials.push_back(map_obj_material(m));
-    if (!warn.empty() && materials.empty() && warn.find("Material") != std::string::npos)
-        mesh.notes.push_back(first_line(warn));
-    mesh.pieces.push_back({0, mesh.positions.size(), glm::dmat4(1.0)});
-    return mesh;
+    if (!b.any_material) b.mesh.triangle_materials.clear();
+    for (const tinyobj::material_t& m : b.materials) b.mesh.materials.push_back(map_obj_material(m));
+    b.mesh.pieces.push_back({0, b.mesh.positions.size(), glm::dmat4(1.0)});
+    return std::move(b.mesh);
 }
 
 }  // namespace wt
