@@ -212,6 +212,14 @@ TEST_F(MeshFile, SmoothNormalsAreAngleWeighted) {
     expect_vec3_near(mesh.normals[4], {-1, 0, 0}, 1e-6f);
 }
 
+TEST_F(MeshFile, AZeroFileNormalIsReplacedByTheSmoothOne) {
+    const glm::vec3 up(0, 0, 3);
+    write("z.ply", ascii_ply({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}, {up, glm::vec3(0), up}));
+    const TriangleMesh mesh = load_file("z.ply", R"(, "transform": {"rotate": {"axis": [1, 0, 0], "degrees": 90}})").meshes[0];
+    ASSERT_EQ(mesh.normals.size(), 3u);
+    for (const glm::vec3& n : mesh.normals) expect_vec3_near(n, {0, -1, 0}, 1e-6f);  // +z turned about x
+}
+
 TEST_F(MeshFile, FlatIgnoresTheFileNormalsAndFileIsTheDefault) {
     const glm::vec3 n(0, 0, 1);
     write("t.ply", ascii_ply(kTriangle, {{0, 1, 2}}, {n, n, n}));

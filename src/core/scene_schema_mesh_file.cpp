@@ -124,7 +124,8 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
         scene.notes.push_back(note + "dropped " + std::to_string(dropped) + " degenerate (zero-area) triangles of " +
                               std::to_string(triangles_in_file));
     if (mesh.triangles.empty())
-        in.fail(file_path, resolved + ": every triangle is degenerate (zero area) after the transform");
+        in.fail(file_path, resolved + ": every triangle is degenerate (zero area)" +
+                               (j.contains("transform") ? " after the transform" : ""));
 
     const std::size_t first_new = scene.meshes.size();
     if (from_file) {

@@ -55,12 +55,6 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
     return true;
 }
 
-std::string first_line(const std::string& text) {
-    std::string s = text.substr(0, text.find('\n'));
-    while (!s.empty() && (s.back() == '\r' || s.back() == ' ')) s.pop_back();
-    return s;
-}
-
 glm::dmat4 local_transform(const tinygltf::Node& node) {
     if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glm
     glm::dmat4 m(1.0);
@@ -101,6 +95,8 @@ public:
         }
         for (int root : roots) visit(root, glm::dmat4(1.0), 0);
         if (!all_have_normals_) mesh_.normals.clear();
+        if (!all_have_normals_ && any_have_normals_)
+            mesh_.notes.push_back("some primitives have no NORMAL: the file's normals are not used");
         if (!any_material_) mesh_.triangle_materials.clear();
         for (const tinygltf::Material& m : model_.materials) mesh_.materials.push_back(map_gltf_material(m));
         return std::move(mesh_);
@@ -181,6 +177,7 @@ private:
         if (normal == primitive.attributes.end()) {
             all_have_normals_ = false;
         } else {
+            any_have_normals_ = true;
             const AccessorBytes normals = accessor(normal->second, "NORMAL", TINYGLTF_TYPE_VEC3, where);
             if (normals.count != positions.count) fail(where + ": NORMAL and POSITION counts differ");
             read_vec3s(normals, "accessor " + std::to_string(normal->second) + " (NORMAL of " + where + ")", mesh_.normals);
@@ -231,6 +228,7 @@ private:
     const tinygltf::Model& model_;
     ImportedMesh mesh_;
     bool all_have_normals_ = true;
+    bool any_have_normals_ = false;
     bool any_material_ = false;
 };
 

@@ -28,6 +28,12 @@ void check_readable(const std::string& path) {
 
 }  // namespace
 
+std::string first_line(const std::string& text) {
+    std::string s = text.substr(0, text.find('\n'));
+    while (!s.empty() && (s.back() == '\r' || s.back() == ' ')) s.pop_back();
+    return s;
+}
+
 ImportedMesh read_mesh_file(const std::string& path) {
     const std::string ext = lower_extension(path);
     ImportedMesh (*reader)(const std::string&) = nullptr;

@@ -13,6 +13,9 @@ namespace wt {
 // coordinate, a face with fewer than 3 vertices, or a file without a triangle.
 ImportedMesh read_mesh_file(const std::string& path);
 
+// The first line of a library's message, which is often several lines of which the first says it.
+std::string first_line(const std::string& text);
+
 // The format readers, each in its own file; read_mesh_file() checks what is common to all.
 ImportedMesh read_obj_file(const std::string& path);
 ImportedMesh read_ply_file(const std::string& path);

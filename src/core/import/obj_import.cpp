@@ -19,12 +19,6 @@
 namespace wt {
 namespace {
 
-std::string first_line(const std::string& text) {
-    std::string s = text.substr(0, text.find('\n'));
-    while (!s.empty() && (s.back() == '\r' || s.back() == ' ')) s.pop_back();
-    return s;
-}
-
 // What the callbacks build. A callback cannot stop the parse, so the first problem is kept and
 // thrown once tinyobjloader returns.
 struct ObjBuilder {
