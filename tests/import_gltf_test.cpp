@@ -120,6 +120,17 @@ TEST_F(GltfImport, NormalsFollowTheNodeRotation) {
     for (const glm::vec3& n : mesh.normals) expect_vec3_near(n, {0, 1, 0});  // (1,0,0) turned 90 degrees about z
 }
 
+TEST_F(GltfImport, OnlyAMirroringNodeHasItsWindingReversed) {
+    Json m = model("m.bin");
+    m["nodes"] = Json::array({{{"children", {1, 2}}}, {{"scale", {-1, 1, 1}}, {"mesh", 0}}, {{"mesh", 0}}});
+    write("m.bin", buffer_bytes());
+    write("m.gltf", m.dump());
+    const TriangleMesh mesh = load_file("m.gltf").meshes[0];
+    EXPECT_EQ(mesh.triangles, (Triangles{{0, 2, 1}, {3, 5, 4}, {3, 6, 5}, {7, 8, 9}, {10, 11, 12}, {10, 12, 13}}));
+    expect_vec3_near(mesh.vertices[1], {-1, 0, 0});
+    expect_vec3_near(mesh.vertices[8], {1, 0, 0});
+}
+
 TEST_F(GltfImport, MaterialsFromFile) {
     Json m = model("m.bin");
     m["materials"].push_back({{"name", "glass"},

@@ -71,8 +71,11 @@ void split_by_material(const ImportedMesh& mesh, const std::vector<uint32_t>& ou
     for (const uint32_t g : order) {
         std::vector<uint32_t> used;
         for (uint32_t t : triangles_of[g])
-            for (uint32_t v : mesh.triangles[t])
-                if (remap[v] == UINT32_MAX) remap[v] = 0, used.push_back(v);
+            for (uint32_t v : mesh.triangles[t]) {
+                if (remap[v] != UINT32_MAX) continue;
+                remap[v] = 0;  // seen; numbered below, in the file's order
+                used.push_back(v);
+            }
         std::sort(used.begin(), used.end());
         TriangleMesh part;
         part.material = ours[g];

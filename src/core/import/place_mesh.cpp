@@ -1,5 +1,6 @@
 #include "core/import/place_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -38,14 +39,25 @@ bool transform_normals(ImportedMesh& mesh, const MeshPiece& piece, const glm::dm
 std::size_t place_mesh(ImportedMesh& mesh, const glm::dmat4& scene_transform, NormalsMode normals) {
     if (normals != NormalsMode::file) mesh.normals.clear();
     bool normals_valid = true;
-    for (const MeshPiece& piece : mesh.pieces) {
+    std::vector<bool> mirrored(mesh.pieces.size(), false);
+    bool any_mirrored = false;
+    for (std::size_t p = 0; p < mesh.pieces.size(); ++p) {
+        const MeshPiece& piece = mesh.pieces[p];
         const glm::dmat4 m = scene_transform * piece.transform;
         if (m != glm::dmat4(1.0)) transform_positions(mesh, piece, m);
         if (!mesh.normals.empty()) normals_valid &= transform_normals(mesh, piece, m);
-        if (glm::determinant(glm::dmat3(m)) >= 0.0) continue;
-        const std::size_t end = piece.first_vertex + piece.vertex_count;
+        mirrored[p] = glm::determinant(glm::dmat3(m)) < 0.0;
+        any_mirrored |= mirrored[p];
+    }
+    if (any_mirrored) {
+        // A triangle belongs to the piece holding its first vertex; pieces are in vertex order.
+        const auto piece_of = [&](uint32_t v) {
+            const auto after = std::upper_bound(mesh.pieces.begin(), mesh.pieces.end(), std::size_t(v),
+                                                [](std::size_t x, const MeshPiece& q) { return x < q.first_vertex; });
+            return std::size_t(after - mesh.pieces.begin()) - 1;
+        };
         for (auto& tri : mesh.triangles)
-            if (tri[0] >= piece.first_vertex && tri[0] < end) std::swap(tri[1], tri[2]);
+            if (mirrored[piece_of(tri[0])]) std::swap(tri[1], tri[2]);
     }
 
     std::size_t kept = 0;
