@@ -219,6 +219,16 @@ TEST_F(GltfImport, MalformedJson) {
     expect_mesh_error(error_for("m.gltf"), "m.gltf", "m.gltf: ");
 }
 
+TEST_F(GltfImport, ExponentialInstancingStops) {
+    Json m = model("");
+    Json nodes = Json::array();
+    for (int i = 0; i < 40; ++i) nodes.push_back({{"children", {i + 1, i + 1}}});
+    nodes.push_back(Json::object());  // no mesh: the test is the walk, not the copies
+    m["nodes"] = nodes;
+    write("m.glb", wt::test::glb(m.dump(), buffer_bytes()));
+    expect_mesh_error(error_for("m.glb"), "m.glb", "the node hierarchy places more than 2^20 node instances");
+}
+
 TEST_F(GltfImport, NoTrianglesIsAnEmptyMesh) {
     Json m = model("");
     m["meshes"][0]["primitives"] = Json::array({m["meshes"][0]["primitives"][2]});  // only the lines

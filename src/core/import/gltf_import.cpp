@@ -108,6 +108,8 @@ private:
     void visit(int index, const glm::dmat4& parent, int depth) {
         if (index < 0 || std::size_t(index) >= model_.nodes.size()) fail("node " + std::to_string(index) + " does not exist");
         if (depth > 256) fail("node " + std::to_string(index) + ": the node hierarchy is deeper than 256 (a cycle?)");
+        // Nodes may share children, so a small file can name exponentially many instances.
+        if (++visits_ > (uint64_t(1) << 20)) fail("the node hierarchy places more than 2^20 node instances");
         const tinygltf::Node& node = model_.nodes[std::size_t(index)];
         const glm::dmat4 world = parent * local_transform(node);
         if (node.mesh >= 0) {
@@ -171,6 +173,8 @@ private:
         if (position == primitive.attributes.end()) fail(where + ": no POSITION attribute");
         const std::size_t first = mesh_.positions.size();
         const AccessorBytes positions = accessor(position->second, "POSITION", TINYGLTF_TYPE_VEC3, where);
+        if (first + positions.count > UINT32_MAX)
+            fail(where + ": the instances come to more than 2^32 - 1 vertices (the renderer's indices are 32-bit)");
         read_vec3s(positions, "accessor " + std::to_string(position->second) + " (POSITION of " + where + ")",
                    mesh_.positions);
         const auto normal = primitive.attributes.find("NORMAL");
@@ -229,6 +233,7 @@ private:
     ImportedMesh mesh_;
     bool all_have_normals_ = true;
     bool any_have_normals_ = false;
+    uint64_t visits_ = 0;
     bool any_material_ = false;
 };
 
