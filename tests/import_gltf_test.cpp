@@ -229,6 +229,14 @@ TEST_F(GltfImport, ExponentialInstancingStops) {
     expect_mesh_error(error_for("m.glb"), "m.glb", "the node hierarchy places more than 2^20 node instances");
 }
 
+TEST_F(GltfImport, EveryTruncatedGlbIsAnError) {
+    const std::string whole = wt::test::glb(model("").dump(), buffer_bytes());
+    for (std::size_t n = 0; n < whole.size(); ++n) {
+        write("m.glb", whole.substr(0, n));
+        EXPECT_NE(error_for("m.glb").find("m.glb"), std::string::npos) << n << " bytes";
+    }
+}
+
 TEST_F(GltfImport, NoTrianglesIsAnEmptyMesh) {
     Json m = model("");
     m["meshes"][0]["primitives"] = Json::array({m["meshes"][0]["primitives"][2]});  // only the lines

@@ -134,6 +134,27 @@ TEST_F(PlyImport, TruncatedBinaryNamesTheByteOffset) {
     expect_mesh_error(error_for("cut.ply"), "cut.ply: byte " + std::to_string(face1) + " (face 1): the file ends inside this record", "");
 }
 
+TEST_F(PlyImport, EveryTruncatedFileIsAnError) {
+    for (const bool big_endian : {false, true}) {
+        const std::string whole = binary_ply(big_endian, kVertices, kFaces, kNormals);
+        for (std::size_t n = 0; n < whole.size(); ++n) {
+            write("cut.ply", whole.substr(0, n));
+            EXPECT_NE(error_for("cut.ply").find("cut.ply"), std::string::npos) << n << " bytes";
+        }
+    }
+    for (std::size_t n = 0; n + 1 < kAsciiPly.size(); ++n) {
+        if (kAsciiPly[n] == '\n') continue;  // cut at a line end: the last record may still be whole
+        write("cut.ply", kAsciiPly.substr(0, n));
+        try {
+            load_file("cut.ply");
+        } catch (const wt::SceneError&) {
+            continue;
+        }
+        // Only a cut inside the last number can leave a valid file (a shorter index).
+        EXPECT_GT(n, kAsciiPly.size() - 3) << n << " bytes loaded";
+    }
+}
+
 TEST_F(PlyImport, IndexOutOfRange) {
     write("bad.ply", binary_ply(true, kVertices, {{0, 1, 5}}));
     expect_mesh_error(error_for("bad.ply"), "bad.ply: byte", "(face 0): vertex index 5 out of range (the file has 5 vertices)");

@@ -33,6 +33,9 @@ protected:
 
     void write(const std::string& name, const std::string& bytes) const {
         std::filesystem::create_directories((dir_ / name).parent_path());
+        // A new file, not the old one truncated: ext4 flushes a truncated-and-rewritten file to
+        // disk on close (auto_da_alloc), which made the truncation tests wait on the disk.
+        std::filesystem::remove(dir_ / name);
         std::ofstream out(dir_ / name, std::ios::binary);
         out << bytes;
         ASSERT_TRUE(out.good()) << "test bug: cannot write " << path(name);
