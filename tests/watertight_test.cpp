@@ -84,7 +84,7 @@ Mesh split_cube(int n, glm::vec3 lo, glm::vec3 hi) {
 Scene scene_of(const Mesh& mesh, TriangleTest test) {
     SceneDescription d;
     d.materials.resize(1);
-    d.meshes.push_back({mesh.vertices, mesh.triangles, {}, 0});
+    d.meshes.push_back({mesh.vertices, mesh.triangles, 0});
     d.settings.accuracy.triangles = test;
     return build_scene(d);
 }
