@@ -182,7 +182,7 @@ private:
 
         Split best;
         if (depth <= kMaxSahDepth) best = find_sah_split(range, on_pool);
-        const float leaf_cost = settings_.primitive_cost * float(count);
+        const float leaf_cost = settings_.primitive_cost * blocks(count);
         if (best.axis >= 0 && (!may_be_leaf || best.cost < leaf_cost)) {
             partition_at(range, best, left, right);
         } else if (may_be_leaf) {
@@ -197,6 +197,9 @@ private:
         n.right = allocate();
         return true;
     }
+
+    // Block tests a leaf of `count` primitives costs.
+    float blocks(uint32_t count) const { return float((count + settings_.leaf_block - 1) / settings_.leaf_block); }
 
     bool make_leaf(BinaryNode& n, const Range& range, uint32_t depth) {
         n.first = range.first;
@@ -247,7 +250,7 @@ private:
                 n += bins.count[a][b - 1];
                 if (n == 0 || right_count[b] == 0) continue;
                 const float cost = settings_.node_cost + settings_.primitive_cost * inv_area *
-                                                             (acc.half_area() * float(n) + right_area[b] * float(right_count[b]));
+                                                             (acc.half_area() * blocks(n) + right_area[b] * blocks(right_count[b]));
                 if (cost < best.cost) best = {a, b, cost};
             }
         }
