@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
@@ -299,6 +300,22 @@ TEST(BenchScenes, SphereScenesAreTheHexroomPlusTheMesh) {
     ASSERT_TRUE(scene.solid.has_value());
     EXPECT_FALSE(bench_scene("hexroom", 8, 8).solid.has_value());
     EXPECT_THROW(bench_scene("no_such_scene", 8, 8), std::invalid_argument);
+}
+
+TEST(BenchScenes, FittingIntoTheBallPutsTheBoxCornersOnIt) {
+    std::vector<TriangleMesh> meshes(2);
+    meshes[0].vertices = {{-10, 0, 0}, {0, 4, 1}};
+    meshes[1].vertices = {{2, -4, 3}};  // the box is [-10, 2] x [-4, 4] x [0, 3]
+    const Ball ball{{5, 0, 1.5f}, 2.2f};
+    fit_into_ball(meshes, ball);
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const TriangleMesh& mesh : meshes)
+        for (const glm::vec3& v : mesh.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    EXPECT_NEAR(glm::length(0.5f * (lo + hi) - ball.centre), 0.0f, 1e-5f);
+    EXPECT_NEAR(0.5f * glm::length(hi - lo), ball.radius, 1e-5f);
+    // Uniformly: the box keeps its proportions 12 : 8 : 3.
+    EXPECT_NEAR((hi.x - lo.x) / (hi.y - lo.y), 1.5f, 1e-5f);
+    EXPECT_NEAR((hi.z - lo.z) / (hi.y - lo.y), 0.375f, 1e-5f);
 }
 
 TEST(BenchScenes, IncoherentRaysNeverStartInsideTheMeshBall) {

@@ -32,6 +32,7 @@
 // reason.
 
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <memory>
 #include <stdexcept>

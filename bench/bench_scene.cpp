@@ -38,18 +38,6 @@ void append_meshes(SceneDescription& scene, const std::vector<Material>& materia
     }
 }
 
-// Scales (uniformly) and moves `meshes` so their common bounding box is centred on the ball
-// and its corners lie on it. Normals are unchanged by a uniform scale and a translation.
-void fit_into_ball(std::vector<TriangleMesh>& meshes, const Ball& ball) {
-    glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
-    for (const TriangleMesh& mesh : meshes)
-        for (const glm::vec3& v : mesh.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
-    const glm::vec3 centre = 0.5f * (lo + hi);
-    const float scale = ball.radius / (0.5f * glm::length(hi - lo));
-    for (TriangleMesh& mesh : meshes)
-        for (glm::vec3& v : mesh.vertices) v = ball.centre + scale * (v - centre);
-}
-
 // The model through the scene loader's mesh_file shape, fitted into the benchmark sphere's ball.
 SceneDescription hexroom_with_model_description(const Ball& ball, int width, int height, int spp) {
     if (!std::filesystem::exists(kModelFile))
@@ -75,6 +63,16 @@ SceneDescription hexroom_description(int width, int height, int spp) {
     // WT_SCENES_DIR is the source tree's scenes/ (bench/CMakeLists.txt), so the programs run
     // from any working directory.
     return with_resolution(load_scene_file(std::string(WT_SCENES_DIR) + "/hexroom.json"), width, height, spp);
+}
+
+void fit_into_ball(std::vector<TriangleMesh>& meshes, const Ball& ball) {
+    glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+    for (const TriangleMesh& mesh : meshes)
+        for (const glm::vec3& v : mesh.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    const float scale = ball.radius / (0.5f * glm::length(hi - lo));
+    for (TriangleMesh& mesh : meshes)
+        for (glm::vec3& v : mesh.vertices) v = ball.centre + scale * (v - centre);
 }
 
 Material added_mesh_material(const std::string& name) {

@@ -34,6 +34,10 @@ Material added_mesh_material(const std::string& name);
 // function's body (load_scene_file) once the loader reads mesh_file shapes on main.
 SceneDescription hexroom_with_sphere_description(const BenchmarkMesh& mesh, int width, int height, int spp);
 
+// Scales (uniformly) and moves `meshes` so their common bounding box is centred on the ball
+// and its corners lie on it. Normals need no change under a uniform scale and a translation.
+void fit_into_ball(std::vector<TriangleMesh>& meshes, const Ball& ball);
+
 // A scene bench_intersect measures.
 struct BenchScene {
     std::string name;
