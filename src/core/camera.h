@@ -25,6 +25,8 @@ public:
         up_ = up * half_height;
     }
 
+    const glm::vec3& eye() const { return eye_; }
+
     // film_x in [0, width), film_y in [0, height), (0,0) the top-left corner of the image.
     Ray generate_ray(float film_x, float film_y) const {
         const float sx = 2.0f * film_x / width_ - 1.0f;

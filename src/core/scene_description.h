@@ -38,15 +38,15 @@ struct Material {
 struct TriangleMesh {
     std::vector<glm::vec3> vertices;
     std::vector<std::array<uint32_t, 3>> triangles;
-    // Shading normals, one per vertex (unit length), interpolated across each triangle; empty
-    // for a flat-shaded mesh, which shades with the geometric normal. Ray offsets and the
-    // side a ray is on always use the geometric normal.
-    std::vector<glm::vec3> normals;
     uint32_t material = 0;  // index into SceneDescription::materials
     // A quad [v0, v1, v2, v3] whose corner v2 is exactly v1 + v3 - v0 in float (rectangles on
     // grid coordinates, like the hexroom's walls and light). Its triangles are (0,1,2), (0,2,3),
     // and build_scene() may store it as one parallelogram instead: one test where two were.
     bool parallelogram = false;
+    // Shading normals, one per vertex (unit length), interpolated across each triangle; empty
+    // for a flat-shaded mesh, which shades with the geometric normal. Ray offsets and the
+    // side a ray is on always use the geometric normal.
+    std::vector<glm::vec3> normals;
 };
 
 struct Sphere {

@@ -1,5 +1,5 @@
 // The intersection kernels at width 8, compiled with the avx2 target flags (src/kernels/CMakeLists.txt).
-#include "kernels/packet_intersect.h"
+#include "kernels/kernel_table.h"
 
 namespace wt {
 

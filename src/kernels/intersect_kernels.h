@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "kernels/accel/bvh_view.h"
 #include "kernels/soa_views.h"
 
 namespace wt {
@@ -14,7 +15,8 @@ enum class Isa : uint8_t { scalar, sse4, avx2, avx512 };
 //   ray packet  - N rays from the queue against one primitive at a time (primitive broadcast)
 //   prim packet - one ray against N primitives at a time (SoA primitive loads, then a
 //                 horizontal reduction for the closest)
-// Both give the same answers; bench_intersect measures which is faster per query.
+// and one ray at a time through a BVH (kernels/accel/bvh.h), whose leaves are prim packets.
+// All give the same answers; bench_intersect measures which is faster per query and scene.
 struct IntersectKernels {
     Isa isa;
     int width;
@@ -23,6 +25,8 @@ struct IntersectKernels {
     // occluded[i] = 1 if anything lies at t in (0, tmax[i]) along ray i, else 0.
     void (*any_raypacket)(const SceneView&, const RayView&, uint8_t* occluded);
     void (*any_primpacket)(const SceneView&, const RayView&, uint8_t* occluded);
+    void (*closest_bvh)(const BvhView&, const RayView&, const HitView&);
+    void (*any_bvh)(const BvhView&, const RayView&, uint8_t* occluded);
 };
 
 // Each ISA has one kernel set per accuracy combination: (triangle test, sphere test), indexed

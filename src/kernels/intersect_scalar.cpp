@@ -1,5 +1,5 @@
 // The intersection kernels at width 1, compiled with the scalar target flags (src/kernels/CMakeLists.txt).
-#include "kernels/packet_intersect.h"
+#include "kernels/kernel_table.h"
 
 namespace wt {
 

@@ -20,7 +20,7 @@ namespace wt {
 // That is 18 multiplications per ray and triangle where the textbook order takes 27, and the
 // SIMD kernels are bound by multiplications. den's sign is moved onto the numerators (exact),
 // so the inside tests compare numerators with |den| and u, v are divided out only for a hit
-// that is kept; packet_intersect.h does the same arithmetic in the same order, so every
+// that is kept; primitives/triangle_lanes.h does the same arithmetic in the same order, so every
 // kernel returns these bits. A parallelogram entry (see TriangleSoA) differs only in its
 // inside test: u <= 1 and v <= 1 instead of u + v <= 1.
 inline bool intersect_triangle(const TriangleSoA& tris, uint32_t i, const Ray& ray, Hit& hit) {

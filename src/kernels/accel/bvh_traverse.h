@@ -1,0 +1,172 @@
+#pragma once
+// One ray at a time through the wide BVH (bvh.h), written once for both queries and both node
+// widths: the ray is tested against all W children of a node with vfloat loads, the children it
+// enters are visited nearest first (closest hit) and a leaf is one SoA primitive test
+// (single_ray.h), so a leaf returns exactly what the flat kernels return for its primitives.
+//
+// Nothing the flat kernels hit is lost: boxes are padded by a bound on the primitive tests'
+// rounding (bvh_boxes.h), and the far slab distance is scaled by 1 + 2 gamma(3) (Ize, "Robust
+// BVH Ray Traversal", JCGT 2013), which makes the float box test accept every ray the exact one
+// does. Subtracting the origin before multiplying by 1/d (not the FMA form bound * (1/d) - o/d)
+// is what that bound assumes.
+
+#include <cstdint>
+
+#include "core/accuracy.h"
+#include "kernels/accel/bvh_view.h"
+#include "kernels/accel/query.h"
+#include "kernels/accel/single_ray.h"
+#include "kernels/primitives/lanes.h"
+#include "kernels/soa_views.h"
+
+namespace wt::packet {
+inline namespace WT_SIMD_ISA {
+
+// 1 + 2 gamma(3), gamma(n) = n u / (1 - n u), u = 2^-24 (Ize 2013, section 3), rounded up.
+inline constexpr float kRobustFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f) + 0x1p-23f;
+
+// The ray as the box test reads it: the origin, 1/d, and per axis which bound row is the near
+// one (min when the direction is positive, max when it is negative, by its sign bit, so -0
+// pairs with 1/-0 = -inf consistently).
+template <int V>
+struct BoxRay {
+    vfloat<V> o[3], inv_d[3];
+    int near_row[3], far_row[3];
+
+    BoxRay(const RayView& rays, uint32_t i) {
+        const float o_[3] = {rays.ox[i], rays.oy[i], rays.oz[i]};
+        const float d_[3] = {rays.dx[i], rays.dy[i], rays.dz[i]};
+        for (int a = 0; a < 3; ++a) {
+            o[a] = vfloat<V>(o_[a]);
+            inv_d[a] = vfloat<V>(1.0f / d_[a]);
+            const bool negative = __builtin_signbit(d_[a]);
+            near_row[a] = 2 * a + int(negative);
+            far_row[a] = 2 * a + 1 - int(negative);
+        }
+    }
+};
+
+// Which children the ray enters at t in [0, limit]; their entry distances go to t_near.
+// A slab that comes out NaN (0 * inf: the origin on a slab plane of a direction with a zero
+// component) is dropped by the NaN rule of simd::min / max (NaN first loses), which only widens
+// the interval.
+template <int W, int V>
+inline uint32_t enter_children(const BvhNode<W>& node, const BoxRay<V>& r, float limit, float* t_near) {
+    uint32_t mask = 0;
+    for (int c = 0; c < W; c += V) {
+        vfloat<V> near[3], far[3];
+        for (int a = 0; a < 3; ++a) {
+            near[a] = (vfloat<V>::loadu(&node.bounds[r.near_row[a]][c]) - r.o[a]) * r.inv_d[a];
+            far[a] = (vfloat<V>::loadu(&node.bounds[r.far_row[a]][c]) - r.o[a]) * r.inv_d[a];
+        }
+        const vfloat<V> enter = simd::max(simd::max(near[0], near[1]), simd::max(near[2], vfloat<V>(0.0f)));
+        const vfloat<V> leave =
+            simd::min(simd::min(simd::min(far[0], far[1]), far[2]) * vfloat<V>(kRobustFarScale), vfloat<V>(limit));
+        mask |= simd::movemask(enter <= leave) << c;
+        vfloat<V>::storeu(t_near + c, enter);
+    }
+    return mask;
+}
+
+template <TriangleTest T, SphereTest S, Query Q, int L>
+inline void test_leaf(const BvhView& bvh, uint32_t ref, const SingleRay<L>& ray, const TriangleRays<T, L>& tri_ray,
+                      SingleRayState<Q, L>& state) {
+    const uint32_t first = ref & kBvhFirstMask;
+    const uint32_t end = first + ((ref >> kBvhCountShift) & 7u) + 1u;
+    switch (BvhLeafKind((ref >> kBvhKindShift) & 3u)) {
+        case BvhLeafKind::parallelogram:
+            // Only Moller-Trumbore scenes have parallelograms (build_scene splits quads otherwise).
+            if constexpr (T == TriangleTest::moller_trumbore)
+                test_planar_run<Planar::parallelogram>(tri_ray, bvh.planar, first, end, IdArray{bvh.planar_prim}, state);
+            break;
+        case BvhLeafKind::triangle:
+            test_planar_run<Planar::triangle>(tri_ray, bvh.planar, first, end, IdArray{bvh.planar_prim}, state);
+            break;
+        case BvhLeafKind::sphere:
+            test_sphere_run<S>(ray, bvh.spheres, first, end, IdArray{bvh.sphere_prim}, state);
+            break;
+        default:  // kBvhEmptyChild: the root of a scene with nothing to hit
+            break;
+    }
+}
+
+// Descending by distance, so the nearest child is on top of the stack. At most W entries.
+inline void sort_far_to_near(uint32_t* refs, float* t, int count) {
+    for (int i = 1; i < count; ++i) {
+        const uint32_t r = refs[i];
+        const float ti = t[i];
+        int j = i - 1;
+        for (; j >= 0 && t[j] < ti; --j) refs[j + 1] = refs[j], t[j + 1] = t[j];
+        refs[j + 1] = r, t[j + 1] = ti;
+    }
+}
+
+template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L>
+inline void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, SingleRayState<Q, L>& state) {
+    const BvhNode<W>* nodes = static_cast<const BvhNode<W>*>(bvh.nodes);
+    const SingleRay<L> ray = broadcast_ray<L>(rays, i);
+    const TriangleRays<T, L> tri_ray(ray.o, ray.d);
+    const BoxRay<V> box_ray(rays, i);
+    uint32_t stack_ref[kBvhStackSize];
+    float stack_t[kBvhStackSize];
+    int top = 0;
+    uint32_t ref = bvh.root;
+    for (;;) {
+        if (!(ref & kBvhLeafBit)) {
+            const BvhNode<W>& node = nodes[ref];
+            alignas(64) float t_near[W];
+            uint32_t mask = enter_children<W, V>(node, box_ray, state.closest, t_near);
+            if (mask) {
+                int c = __builtin_ctz(mask);
+                mask &= mask - 1;
+                if (!mask) {  // one child entered: no stack traffic
+                    ref = node.child[c];
+                    continue;
+                }
+                const int base = top;
+                stack_ref[top] = node.child[c], stack_t[top] = t_near[c], ++top;
+                for (; mask; mask &= mask - 1) {
+                    c = __builtin_ctz(mask);
+                    stack_ref[top] = node.child[c], stack_t[top] = t_near[c], ++top;
+                }
+                // Nearest first pays for the closest hit: what it finds culls the rest. An
+                // occlusion query stops at any blocker, so it skips the sort.
+                if constexpr (Q == Query::closest) sort_far_to_near(stack_ref + base, stack_t + base, top - base);
+                ref = stack_ref[--top];
+                continue;
+            }
+        } else {
+            test_leaf<T, S, Q, L>(bvh, ref, ray, tri_ray, state);
+            if (state.done()) return;
+        }
+        // Next entry still nearer than the closest hit so far (entries were pushed with
+        // t_near <= the closest at that time; a hit since may have passed them).
+        do {
+            if (top == 0) return;
+            --top;
+        } while (!(stack_t[top] <= state.closest));
+        ref = stack_ref[top];
+    }
+}
+
+template <Query Q, TriangleTest T, SphereTest S, int W, int MaxWidth>
+void trace_bvh_rays(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
+    constexpr int kLeafLanes = MaxWidth < int(kBvhMaxLeafSize) ? MaxWidth : int(kBvhMaxLeafSize);
+    constexpr int kNodeLanes = MaxWidth < W ? MaxWidth : W;
+    for (uint32_t i = 0; i < rays.count; ++i) {
+        SingleRayState<Q, kLeafLanes> state(rays.tmax ? rays.tmax[i] : kInfinity);
+        trace_one<T, S, Q, W, kNodeLanes, kLeafLanes>(bvh, rays, i, state);
+        state.write(out, i);
+    }
+}
+
+template <Query Q, TriangleTest T, SphereTest S, int MaxWidth>
+void bvh_query(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
+    if (bvh.node_width == 4)
+        trace_bvh_rays<Q, T, S, 4, MaxWidth>(bvh, rays, out);
+    else
+        trace_bvh_rays<Q, T, S, 8, MaxWidth>(bvh, rays, out);
+}
+
+}  // namespace WT_SIMD_ISA
+}  // namespace wt::packet

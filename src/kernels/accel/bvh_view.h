@@ -1,0 +1,54 @@
+#pragma once
+// The BVH as the per-ISA traversal kernels read it: plain structs and constants, no inline
+// functions and no STL (see soa_views.h for why the per-ISA translation units must not share
+// inline code with the rest of the program).
+//
+// A node has W children (W = 4 or 8) whose boxes are stored axis by axis, W floats per bound,
+// so one ray is tested against all W boxes with vfloat loads. The six bound rows are
+// (min x, max x, min y, max y, min z, max z): a ray picks its near and far row per axis once,
+// from the signs of its direction, and the box test has no per-lane min/max of the slabs
+// (madmann91/bvh's octant trick).
+
+#include <cstdint>
+
+#include "kernels/soa_views.h"
+
+namespace wt {
+
+template <int W>
+struct alignas(64) BvhNode {
+    float bounds[6][W];  // rows: min x, max x, min y, max y, min z, max z; an empty slot is +inf..-inf
+    uint32_t child[W];   // an inner node's index, or a leaf (kBvhLeafBit set), or kBvhEmptyChild
+};
+
+// A child reference: an inner node's index in the node array, or a leaf packed as
+//   bit 31: leaf, bits 29-30: kind (BvhLeafKind), bits 26-28: primitive count - 1,
+//   bits 0-25: index of its first primitive in the leaf-ordered array of its kind.
+// Leaves hold one kind only, so the leaf test runs one straight-line primitive test.
+enum class BvhLeafKind : uint32_t { parallelogram = 0, triangle = 1, sphere = 2 };
+constexpr uint32_t kBvhLeafBit = 1u << 31;
+constexpr uint32_t kBvhKindShift = 29;
+constexpr uint32_t kBvhCountShift = 26;
+constexpr uint32_t kBvhFirstMask = (1u << kBvhCountShift) - 1;
+constexpr uint32_t kBvhMaxLeafSize = 8;
+constexpr uint32_t kBvhEmptyChild = 0xFFFFFFFFu;  // kind 3: no primitive kind; its box is empty, so it is never entered
+constexpr uint32_t kBvhMaxLeafPrimitives = kBvhFirstMask + 1;  // per kind
+// Entries a traversal stack can need: the deepest path times the W - 1 siblings each node on it
+// may leave behind, plus one. build_bvh refuses a tree deeper than this allows.
+constexpr int kBvhStackSize = 1024;
+
+struct BvhView {
+    const void* nodes;     // BvhNode<node_width>[node_count]
+    uint32_t node_width;   // 4 or 8
+    uint32_t root;         // child reference of the root (a leaf for a scene that fits in one)
+    uint32_t max_depth;    // deepest leaf, in nodes: bounds the traversal stack
+    // Primitives in leaf order, copied from the scene with the values the tests read, so a
+    // leaf test returns the bits the flat kernels return. The planar view holds both
+    // parallelograms and triangles (the leaf's kind says which); its parallelogram_count is unused.
+    TriangleView planar;
+    SphereView spheres;  // first_prim unused: ids come from sphere_prim
+    const uint32_t* planar_prim;  // leaf-order index -> the scene's primitive id
+    const uint32_t* sphere_prim;
+};
+
+}  // namespace wt

@@ -1,0 +1,152 @@
+#pragma once
+// One ray against N primitives at a time: a run of consecutive primitives of one kind (a BVH
+// leaf, or a chunk of the flat list), tested with SoA loads, the answer kept per lane.
+//
+// Closest hits are compared as (t, primitive id) pairs, smallest first. The flat kernels visit
+// primitives in id order and keep the first of equal distances, which is the smallest id; the
+// BVH visits them in another order, and with the same rule returns the same primitive, so its
+// answers are the flat kernels' bits even where two triangles sharing an edge are hit at one t.
+
+#include <cstdint>
+#include <cstring>
+
+#include "kernels/accel/query.h"
+#include "kernels/primitives/lanes.h"
+#include "kernels/primitives/sphere_lanes.h"
+#include "kernels/primitives/triangle_lanes.h"
+#include "kernels/soa_views.h"
+
+namespace wt::packet {
+inline namespace WT_SIMD_ISA {
+
+template <int N>
+struct SingleRay {
+    Vec3<N> o, d;
+    float tmax;
+};
+
+template <int N>
+inline SingleRay<N> broadcast_ray(const RayView& rays, uint32_t i) {
+    return {broadcast<N>(rays.ox, rays.oy, rays.oz, i), broadcast<N>(rays.dx, rays.dy, rays.dz, i),
+            rays.tmax ? rays.tmax[i] : kInfinity};
+}
+
+template <int N>
+inline int lanes_left(uint32_t end, uint32_t first) {
+    return int(end - first < uint32_t(N) ? end - first : uint32_t(N));
+}
+
+// The next float above a positive finite x.
+inline float next_float_up(float x) {
+    uint32_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    ++bits;
+    std::memcpy(&x, &bits, sizeof bits);
+    return x;
+}
+
+// What one ray's query has found so far. `limit`: a primitive test counts hits at t < limit.
+template <Query Q, int N>
+struct SingleRayState;
+
+template <int N>
+struct SingleRayState<Query::closest, N> {
+    LaneHits<N> best;
+    vint<N> best_prim;
+    float closest;  // the smallest t found (tmax while there is none): boxes beyond it are skipped
+    float limit;    // tmax, then the float after `closest`, so an equal t still competes on its id
+
+    explicit SingleRayState(float tmax)
+        : best(sphere_hits(vfloat<N>(tmax))), best_prim(-1), closest(tmax), limit(tmax) {}
+
+    bool done() const { return false; }
+
+    void record(const vbool<N>& hit, const LaneHits<N>& h, const vint<N>& ids) {
+        if (simd::none(hit)) return;
+        const vbool<N> better = hit & ((h.t < best.t) | ((h.t == best.t) & (ids < best_prim)));
+        best = select(better, h, best);
+        best_prim = simd::select(better, ids, best_prim);
+        closest = simd::reduce_min(best.t);
+        limit = next_float_up(closest);
+    }
+
+    // The lane holding the smallest (t, id), its barycentrics divided out once.
+    void write(const HitView& hits, uint32_t ray) const {
+        uint32_t candidates = simd::movemask((best.t == vfloat<N>(closest)) & (best_prim != vint<N>(-1)));
+        int winner = -1;
+        for (; candidates; candidates &= candidates - 1) {
+            const int lane = __builtin_ctz(candidates);
+            if (winner < 0 || best_prim[lane] < best_prim[winner]) winner = lane;
+        }
+        if (winner < 0) {
+            hits.t[ray] = kInfinity, hits.u[ray] = 0.0f, hits.v[ray] = 0.0f, hits.prim[ray] = UINT32_MAX;
+        } else {
+            hits.t[ray] = best.t[winner];
+            hits.u[ray] = best.u_num[winner] / best.den[winner];
+            hits.v[ray] = best.v_num[winner] / best.den[winner];
+            hits.prim[ray] = uint32_t(best_prim[winner]);
+        }
+    }
+};
+
+template <int N>
+struct SingleRayState<Query::any, N> {
+    bool blocked = false;
+    float closest;  // boxes beyond tmax are skipped
+    float limit;
+
+    explicit SingleRayState(float tmax) : closest(tmax), limit(tmax) {}
+
+    bool done() const { return blocked; }
+    void record(const vbool<N>& hit, const LaneHits<N>&, const vint<N>&) { blocked = blocked || simd::any(hit); }
+    void write(uint8_t* occluded, uint32_t ray) const { occluded[ray] = blocked; }
+};
+
+// Primitive ids of a run: consecutive from a base (the flat list), or read from the leaf-order
+// id array (a BVH leaf).
+struct ConsecutiveIds {
+    int32_t base;
+    template <int N>
+    vint<N> at(uint32_t first, int) const {
+        return vint<N>::step() + vint<N>(base + int32_t(first));
+    }
+};
+
+struct IdArray {
+    const uint32_t* ids;
+    template <int N>
+    vint<N> at(uint32_t first, int count) const {
+        return vint<N>::load_partial(reinterpret_cast<const int32_t*>(ids) + first, count, vint<N>(-1));
+    }
+};
+
+// Planar primitives [first, end) of shape P against the ray, N at a time.
+template <Planar P, TriangleTest T, Query Q, int N, typename Ids>
+inline void test_planar_run(const TriangleRays<T, N>& ray, const TriangleView& tri, uint32_t first, uint32_t end,
+                            const Ids& ids, SingleRayState<Q, N>& state) {
+    for (uint32_t c = first; c < end && !state.done(); c += N) {
+        const int n = lanes_left<N>(end, c);
+        const vbool<N> lanes = vint<N>::step() < vint<N>(n);
+        LaneHits<N> h;
+        const vbool<N> hit =
+            lanes & intersect_triangles<P>(ray, load_triangles<T, N>(tri, c, n), lanes, vfloat<N>(state.limit), h);
+        state.record(hit, h, ids.template at<N>(c, n));
+    }
+}
+
+template <SphereTest S, Query Q, int N, typename Ids>
+inline void test_sphere_run(const SingleRay<N>& ray, const SphereView& sph, uint32_t first, uint32_t end, const Ids& ids,
+                            SingleRayState<Q, N>& state) {
+    for (uint32_t c = first; c < end && !state.done(); c += N) {
+        const int n = lanes_left<N>(end, c);
+        vfloat<N> t;
+        const vfloat<N> radius = vfloat<N>::load_partial(sph.radius + c, n, vfloat<N>(0.0f));
+        const vbool<N> hit = (vint<N>::step() < vint<N>(n)) &
+                             intersect_spheres<S>(ray.o, ray.d, load_partial<N>(sph.cx, sph.cy, sph.cz, c, n), radius,
+                                                  vfloat<N>(state.limit), t);
+        state.record(hit, sphere_hits(t), ids.template at<N>(c, n));
+    }
+}
+
+}  // namespace WT_SIMD_ISA
+}  // namespace wt::packet

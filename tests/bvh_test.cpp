@@ -1,0 +1,215 @@
+// The BVH against the flat kernels it replaces, and the tree's own invariants. The traversal
+// must return the flat list's bits for every ray (same primitive, t, u and v; same occlusion
+// answer): it runs the same primitive tests and breaks ties on equal t by primitive id as the
+// flat loop's order does, so there is no "either of two" to allow, even on shared edges.
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "bvh_test_scenes.h"
+#include "kernels/accel/bvh.h"
+#include "kernels/intersect_dispatch.h"
+#include "test_scenes.h"
+
+namespace wt {
+namespace {
+
+#ifndef WT_LONG_TESTS
+#define WT_LONG_TESTS 0
+#endif
+constexpr int kRandomRays = WT_LONG_TESTS ? 1 << 21 : 1 << 16;
+
+// What the flat kernels answer for a ray set: the reference every BVH build is held to. The
+// flat kernels equal the scalar textbook on every ISA (packet_intersect_test), so the widest
+// one this CPU runs stands for all of them.
+struct FlatAnswers {
+    test::HitArrays closest[2]{test::HitArrays(0), test::HitArrays(0)};  // unbounded, bounded
+    std::vector<uint8_t> any[2];
+
+    FlatAnswers(const Scene& scene, const test::RayBatch& rays) {
+        const IntersectKernels& k = intersect_kernels(best_supported_isa(), scene.settings.accuracy);
+        for (int bounded = 0; bounded < 2; ++bounded) {
+            closest[bounded] = test::HitArrays(rays.size());
+            any[bounded].assign(rays.size(), 7);
+            k.closest_raypacket(scene_view(scene), rays.view(bounded), closest[bounded].view());
+            k.any_raypacket(scene_view(scene), rays.view(bounded), any[bounded].data());
+        }
+    }
+};
+
+void expect_bvh_matches_flat(const Scene& scene, const test::RayBatch& rays, const FlatAnswers& flat, Isa isa,
+                             const BvhBuildOptions& options, const std::string& what) {
+    SCOPED_TRACE(what + ", isa " + isa_name(isa) + ", width " + std::to_string(options.node_width) + ", leaf " +
+                 std::to_string(options.max_leaf_size));
+    const Bvh bvh = build_bvh(scene, options);
+    const IntersectKernels& k = intersect_kernels(isa, scene.settings.accuracy);
+    const BvhView tree = bvh_view(bvh);
+    const std::size_t n = rays.size();
+    for (int bounded = 0; bounded < 2; ++bounded) {
+        const test::HitArrays& expected = flat.closest[bounded];
+        test::HitArrays got(n);
+        k.closest_bvh(tree, rays.view(bounded), got.view());
+        std::size_t mismatches = 0, first_bad = n;
+        for (std::size_t i = 0; i < n; ++i) {
+            const bool same = expected.prim[i] == got.prim[i] && expected.t[i] == got.t[i] &&
+                              (expected.prim[i] == kNoHit || (expected.u[i] == got.u[i] && expected.v[i] == got.v[i]));
+            if (!same && mismatches++ == 0) first_bad = i;
+        }
+        EXPECT_EQ(mismatches, 0u) << "closest, bounded " << bounded << ": first at ray " << first_bad << " (flat prim "
+                                  << (first_bad < n ? expected.prim[first_bad] : 0) << " t "
+                                  << (first_bad < n ? expected.t[first_bad] : 0) << ", bvh prim "
+                                  << (first_bad < n ? got.prim[first_bad] : 0) << " t "
+                                  << (first_bad < n ? got.t[first_bad] : 0) << ")";
+        std::vector<uint8_t> occluded(n, 9);
+        k.any_bvh(tree, rays.view(bounded), occluded.data());
+        std::size_t any_mismatches = 0;
+        for (std::size_t i = 0; i < n; ++i) any_mismatches += flat.any[bounded][i] != occluded[i];
+        EXPECT_EQ(any_mismatches, 0u) << "any, bounded " << bounded;
+    }
+}
+
+std::vector<Isa> supported_isas() {
+    std::vector<Isa> isas;
+    for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512})
+        if (cpu_supports(isa)) isas.push_back(isa);
+    return isas;
+}
+
+std::vector<BvhBuildOptions> build_variants() {
+    std::vector<BvhBuildOptions> all;
+    for (int width : {4, 8})
+        for (int leaf : {1, 4, 8}) all.push_back({width, leaf, 2});
+    return all;
+}
+
+std::vector<AccuracySettings> accuracy_variants() {
+    std::vector<AccuracySettings> all;
+    for (TriangleTest t : {TriangleTest::moller_trumbore, TriangleTest::watertight})
+        for (SphereTest s : {SphereTest::quadratic, SphereTest::cancellation_free}) all.push_back({t, s, FresnelModel::schlick});
+    return all;
+}
+
+TEST(Bvh, HexroomEqualsFlatKernelsOnEveryIsaWidthLeafSizeAndAccuracy) {
+    for (const AccuracySettings& accuracy : accuracy_variants()) {
+        SceneDescription d = test::hexroom(8, 8, 1);
+        d.settings.accuracy = accuracy;
+        const Scene scene = build_scene(d);
+        const test::RayBatch rays = test::scene_rays(scene, kRandomRays, 11);
+        const FlatAnswers flat(scene, rays);
+        for (Isa isa : supported_isas())
+            for (const BvhBuildOptions& o : build_variants())
+                expect_bvh_matches_flat(scene, rays, flat, isa, o, std::string("hexroom, ") + name_of(accuracy.triangles));
+    }
+}
+
+TEST(Bvh, MeshSceneEqualsFlatKernels) {
+    // The hexroom with a 2,000-triangle displaced sphere and a closed icosphere: shared edges,
+    // vertices and thin triangles at every angle.
+    for (TriangleTest test : {TriangleTest::moller_trumbore, TriangleTest::watertight}) {
+        SceneDescription d = test::hexroom_with_meshes(8, 8, 1);
+        d.settings.accuracy.triangles = test;
+        const Scene scene = build_scene(d);
+        const test::RayBatch rays = test::scene_rays(scene, kRandomRays, 12);
+        const FlatAnswers flat(scene, rays);
+        for (Isa isa : supported_isas())
+            for (int width : {4, 8}) expect_bvh_matches_flat(scene, rays, flat, isa, {width, 8, 2}, std::string("meshes, ") + name_of(test));
+    }
+}
+
+TEST(Bvh, AxisAlignedRaysWithZeroDirectionComponents) {
+    const Scene scene = build_scene(test::hexroom_with_meshes(8, 8, 1));
+    test::RayBatch rays;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> ux(-2.5f, 12.5f), uy(-5.5f, 5.5f), uz(-4.9f, 4.9f);
+    const glm::vec3 axes[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {-0.0f, 0.0f, 1.0f}};
+    for (int i = 0; i < 20000; ++i) {
+        const glm::vec3 o(ux(rng), uy(rng), uz(rng));
+        for (const glm::vec3& a : axes) rays.push({o, a}, 30.0f);
+    }
+    // Origins exactly on box planes: the vertices themselves, axis-aligned directions.
+    const TriangleSoA& t = scene.triangles;
+    for (uint32_t i = 0; i < t.size(); i += 7)
+        for (const glm::vec3& a : axes) rays.push({t.vertex0(i) - 3.0f * a, a}, 30.0f);
+    const FlatAnswers flat(scene, rays);
+    for (Isa isa : supported_isas())
+        for (int width : {4, 8}) expect_bvh_matches_flat(scene, rays, flat, isa, {width, 8, 2}, "axis-aligned");
+}
+
+TEST(Bvh, DegenerateSets) {
+    struct Case {
+        const char* name;
+        SceneDescription scene;
+    };
+    std::vector<Case> cases;
+    cases.push_back({"one triangle", test::triangle_soup(1, 1.0f, glm::vec3(0.0f), 1)});
+    cases.push_back({"same centroid", test::same_centroid_fan(300)});
+    cases.push_back({"coplanar", test::coplanar_grid(40)});
+    cases.push_back({"tiny scale", test::triangle_soup(3000, 1e-6f, glm::vec3(0.0f), 2)});
+    cases.push_back({"huge scale", test::triangle_soup(3000, 1e6f, glm::vec3(0.0f), 3)});
+    cases.push_back({"far from origin", test::triangle_soup(3000, 1.0f, glm::vec3(1e5f, -1e5f, 1e5f), 4)});
+    for (const Case& c : cases) {
+        const Scene scene = build_scene(c.scene);
+        const test::RayBatch rays = test::rays_at_primitives(scene, 20000, 21);
+        const FlatAnswers flat(scene, rays);
+        for (Isa isa : supported_isas())
+            for (int width : {4, 8}) expect_bvh_matches_flat(scene, rays, flat, isa, {width, 8, 2}, c.name);
+    }
+}
+
+TEST(Bvh, EmptySceneHitsNothing) {
+    SceneDescription d = test::triangle_soup(1, 1.0f, glm::vec3(0.0f), 1);
+    d.meshes.clear();
+    const Scene scene = build_scene(d);
+    const Bvh bvh = build_bvh(scene);
+    test::RayBatch rays;
+    rays.push({{0, 0, 0}, {1, 0, 0}});
+    for (Isa isa : supported_isas()) {
+        test::HitArrays hits(1);
+        std::vector<uint8_t> occluded(1, 7);
+        intersect_kernels(isa).closest_bvh(bvh_view(bvh), rays.view(false), hits.view());
+        intersect_kernels(isa).any_bvh(bvh_view(bvh), rays.view(false), occluded.data());
+        EXPECT_EQ(hits.prim[0], kNoHit);
+        EXPECT_EQ(occluded[0], 0);
+    }
+}
+
+// Every primitive in exactly one leaf, every box inside its parent's, the same tree for any
+// thread count.
+TEST(Bvh, BuildInvariantsAndDeterminism) {
+    const Scene scene = build_scene(test::hexroom_with_meshes(8, 8, 1));
+    for (int width : {4, 8}) {
+        const Bvh one = build_bvh(scene, {width, 8, 1});
+        const test::BvhDump reference = test::dump_bvh(bvh_view(one));
+        EXPECT_TRUE(reference.parents_contain_children) << "width " << width;
+        std::vector<uint32_t> ids = reference.primitive_ids;
+        std::sort(ids.begin(), ids.end());
+        std::vector<uint32_t> expected;
+        for (uint32_t i = 0; i < scene.primitive_count(); ++i)
+            if (i >= scene.triangles.size() || !(scene.triangles.edge1(i) == glm::vec3(0.0f) && scene.triangles.edge2(i) == glm::vec3(0.0f)))
+                expected.push_back(i);
+        EXPECT_EQ(ids, expected) << "every primitive exactly once, width " << width;
+        EXPECT_LE(reference.max_leaf_size, 8u);
+        EXPECT_TRUE(reference.leaves_one_kind);
+        for (int threads : {2, 3}) {
+            const test::BvhDump other = test::dump_bvh(bvh_view(build_bvh(scene, {width, 8, threads})));
+            EXPECT_TRUE(other == reference) << "tree differs with " << threads << " threads, width " << width;
+        }
+        EXPECT_GT(one.stats().sah_cost, 0.0);
+        EXPECT_EQ(one.stats().leaf_count, reference.leaf_count);
+    }
+}
+
+TEST(Bvh, RejectsBadOptions) {
+    const Scene scene = build_scene(test::hexroom(8, 8, 1));
+    EXPECT_THROW(build_bvh(scene, {2, 8, 1}), std::invalid_argument);
+    EXPECT_THROW(build_bvh(scene, {8, 0, 1}), std::invalid_argument);
+    EXPECT_THROW(build_bvh(scene, {8, 9, 1}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace wt
