@@ -10,9 +10,9 @@
 // before the BVH) and brute_primpacket (one ray against N primitives) on the hexroom only:
 // brute force over 10k+ triangles takes minutes per iteration. Embree's layouts: single, raypacket.
 //   build/<scene>/<bvh8|bvh4|embree>/threads:<1|2>
-// times one BVH build: build_bvh() with that many threads, or rtcNewScene + the geometries +
-// rtcCommitScene on an Embree device made with "threads=N" (the device is made, and one
-// build done, before timing; freeing the built tree is not timed).
+// times one BVH build: build_bvh() on a thread pool of that many threads, or rtcNewScene + the
+// geometries + rtcCommitScene on an Embree device made with "threads=N" (the pool or device is
+// made, and one build done, before timing; freeing the built tree is not timed).
 //
 // Every iteration of a ray benchmark traces the whole workload (640k or 1M rays) on one
 // thread. Besides rays_per_second each reports checksums of its answers, `hits` and (closest
@@ -45,6 +45,7 @@
 #include "command_line.h"
 #include "core/aligned_vector.h"
 #include "core/ray.h"
+#include "core/thread_pool.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/intersect_dispatch.h"
 #include "scene_workloads.h"
@@ -195,6 +196,7 @@ void register_kernel_benchmarks(const std::string& scene, const std::vector<Isa>
 
 // The BVH's size and quality, from the last build.
 void report_bvh_stats(benchmark::State& state, const BvhStats& stats) {
+    state.counters["primitives"] = double(stats.primitive_count);
     state.counters["nodes"] = double(stats.node_count);
     state.counters["leaves"] = double(stats.leaf_count);
     state.counters["sah_cost"] = stats.sah_cost;
@@ -211,13 +213,15 @@ void register_bvh_build_benchmarks(const std::string& scene) {
                     BvhBuildOptions options;
                     options.node_width = node_width;
                     options.threads = threads;
-                    // One build before timing, so a first-use cost (a thread pool) is not timed.
-                    auto bvh = std::make_unique<Bvh>(build_bvh(workloads.scene(), options));
+                    // The threads are started before timing, as Embree's device is made before
+                    // its builds are timed.
+                    ThreadPool pool(threads);
+                    auto bvh = std::make_unique<Bvh>(build_bvh(workloads.scene(), options, &pool));
                     for (auto _ : state) {
                         state.PauseTiming();
                         bvh.reset();
                         state.ResumeTiming();
-                        bvh = std::make_unique<Bvh>(build_bvh(workloads.scene(), options));
+                        bvh = std::make_unique<Bvh>(build_bvh(workloads.scene(), options, &pool));
                     }
                     report_bvh_stats(state, bvh->stats());
                 });
