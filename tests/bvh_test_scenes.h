@@ -5,7 +5,7 @@
 
 #include <array>
 #include <cmath>
-#include <map>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -48,48 +48,22 @@ inline glm::vec3 random_unit(std::mt19937& rng) {
     }
 }
 
-// A closed icosphere (subdivided `levels` times, 20 * 4^levels triangles) displaced radially by
-// up to `bump` of its radius, wound outward.
-inline TriangleMesh icosphere(const glm::vec3& center, float radius, int levels, float bump, uint32_t material) {
-    const float p = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    std::vector<glm::vec3> v = {{-1, p, 0}, {1, p, 0}, {-1, -p, 0}, {1, -p, 0}, {0, -1, p}, {0, 1, p},
-                                {0, -1, -p}, {0, 1, -p}, {p, 0, -1}, {p, 0, 1}, {-p, 0, -1}, {-p, 0, 1}};
-    std::vector<std::array<uint32_t, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                              {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                              {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                              {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-    for (glm::vec3& x : v) x = glm::normalize(x);
-    for (int l = 0; l < levels; ++l) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
-        auto midpoint = [&](uint32_t a, uint32_t b) {
-            const auto key = std::minmax(a, b);
-            auto it = mid.find(key);
-            if (it != mid.end()) return it->second;
-            v.push_back(glm::normalize(v[a] + v[b]));
-            return mid[key] = uint32_t(v.size() - 1);
-        };
-        std::vector<std::array<uint32_t, 3>> next;
-        for (const auto& t : f) {
-            const uint32_t a = midpoint(t[0], t[1]), b = midpoint(t[1], t[2]), c = midpoint(t[2], t[0]);
-            next.push_back({t[0], a, c}), next.push_back({t[1], b, a}), next.push_back({t[2], c, b}), next.push_back({a, b, c});
-        }
-        f = next;
-    }
-    TriangleMesh m;
-    for (const glm::vec3& x : v) {
+// test::icosphere displaced radially by up to `bump` of its radius: still closed, with shared
+// edges at every angle.
+inline TriangleMesh bumpy_icosphere(const glm::vec3& center, float radius, int levels, float bump) {
+    TriangleMesh m = icosphere(levels);
+    for (glm::vec3& x : m.vertices) {
         const float d = 1.0f + bump * std::sin(7.0f * x.x) * std::sin(5.0f * x.y + 1.0f) * std::cos(3.0f * x.z);
-        m.vertices.push_back(center + radius * d * x);
+        x = center + radius * d * x;
     }
-    m.triangles = f;
-    m.material = material;
     return m;
 }
 
 // The hexroom plus a bumpy 5,120-triangle icosphere and a small 320-triangle one touching the floor.
 inline SceneDescription hexroom_with_meshes(int width, int height, int spp) {
     SceneDescription d = hexroom(width, height, spp);
-    d.meshes.push_back(icosphere({5.0f, 0.5f, 1.0f}, 1.8f, 4, 0.08f, 0));
-    d.meshes.push_back(icosphere({8.0f, 3.0f, -4.2f}, 0.8f, 2, 0.0f, 0));
+    d.meshes.push_back(bumpy_icosphere({5.0f, 0.5f, 1.0f}, 1.8f, 4, 0.08f));
+    d.meshes.push_back(icosphere(2, 0.8f, {8.0f, 3.0f, -4.2f}));
     return d;
 }
 
@@ -250,23 +224,25 @@ inline Bounds walk(const BvhView& v, uint32_t ref, BvhDump& out) {
         ++out.leaf_count;
         out.max_leaf_size = std::max(out.max_leaf_size, count);
         out.leaves_one_kind &= kind <= uint32_t(BvhLeafKind::sphere);
-        for (uint32_t i = first; i < first + count; ++i) {
-            if (kind == uint32_t(BvhLeafKind::sphere)) {
-                out.primitive_ids.push_back(v.sphere_prim[i]);
-                const glm::vec3 c(v.spheres.cx[i], v.spheres.cy[i], v.spheres.cz[i]);
-                b.add(c - v.spheres.radius[i]), b.add(c + v.spheres.radius[i]);
+        const bool sphere = kind == uint32_t(BvhLeafKind::sphere);
+        const uint32_t rows = sphere ? kSphereRows : v.planar_rows;
+        const float* block = (sphere ? v.spheres : v.planar) + std::size_t(first) * rows;
+        auto at = [&](uint32_t row, uint32_t lane) { return block[row * count + lane]; };
+        auto vec = [&](uint32_t row, uint32_t lane) { return glm::vec3(at(row, lane), at(row + 1, lane), at(row + 2, lane)); };
+        for (uint32_t l = 0; l < count; ++l) {
+            uint32_t id;
+            const float id_bits = at(rows - 1, l);
+            std::memcpy(&id, &id_bits, sizeof id);
+            out.primitive_ids.push_back(id);
+            if (sphere) {
+                const float r = at(3, l);
+                b.add(vec(0, l) - r), b.add(vec(0, l) + r);
+            } else if (v.planar_rows == kWatertightRows) {
+                b.add(vec(0, l)), b.add(vec(3, l)), b.add(vec(6, l));
             } else {
-                out.primitive_ids.push_back(v.planar_prim[i]);
-                const TriangleView& t = v.planar;
-                const glm::vec3 v0(t.v0x[i], t.v0y[i], t.v0z[i]);
-                b.add(v0);
-                if (t.v1x) {
-                    b.add({t.v1x[i], t.v1y[i], t.v1z[i]}), b.add({t.v2x[i], t.v2y[i], t.v2z[i]});
-                } else {
-                    const glm::vec3 e1(t.e1x[i], t.e1y[i], t.e1z[i]), e2(t.e2x[i], t.e2y[i], t.e2z[i]);
-                    b.add(v0 + e1), b.add(v0 + e2);
-                    if (kind == uint32_t(BvhLeafKind::parallelogram)) b.add(v0 + e1 + e2);
-                }
+                const glm::vec3 v0 = vec(0, l), e1 = vec(3, l), e2 = vec(6, l);
+                b.add(v0), b.add(v0 + e1), b.add(v0 + e2);
+                if (kind == uint32_t(BvhLeafKind::parallelogram)) b.add(v0 + e1 + e2);
             }
         }
         return b;

@@ -23,9 +23,12 @@ struct RenderedFilm {
 };
 
 inline RenderedFilm render_film(const SceneDescription& description, Integrator integrator, int threads = 2,
-                                int tile_size = 16, std::size_t batch_paths = 2048, std::optional<Isa> isa = {}) {
+                                int tile_size = 16, std::size_t batch_paths = 2048, std::optional<Isa> isa = {},
+                                Accel accel = Accel::automatic, int bvh_width = 8) {
     const Scene scene = build_scene(description);
     RenderOptions options;
+    options.accel = accel;
+    options.bvh.node_width = bvh_width;
     options.integrator = integrator;
     options.threads = threads;
     options.tile_size = tile_size;

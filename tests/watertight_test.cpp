@@ -12,45 +12,15 @@
 #include <gtest/gtest.h>
 
 #include "kernels/intersect_dispatch.h"
+#include "test_scenes.h"
 
 namespace wt {
 namespace {
 
-struct Mesh {
-    std::vector<glm::vec3> vertices;
-    std::vector<std::array<uint32_t, 3>> triangles;
-};
+// Vertices and triangles; material 0, no vertex normals.
+using Mesh = TriangleMesh;
 
-// Icosahedron subdivided `levels` times, vertices pushed onto the sphere of radius r.
-Mesh icosphere(int levels, float r, glm::vec3 center) {
-    const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    Mesh m;
-    for (glm::vec3 v : {glm::vec3(-1, t, 0), glm::vec3(1, t, 0), glm::vec3(-1, -t, 0), glm::vec3(1, -t, 0),
-                        glm::vec3(0, -1, t), glm::vec3(0, 1, t), glm::vec3(0, -1, -t), glm::vec3(0, 1, -t),
-                        glm::vec3(t, 0, -1), glm::vec3(t, 0, 1), glm::vec3(-t, 0, -1), glm::vec3(-t, 0, 1)})
-        m.vertices.push_back(glm::normalize(v));
-    m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                   {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-    for (int l = 0; l < levels; ++l) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoint;
-        auto mid = [&](uint32_t a, uint32_t b) {
-            const auto key = std::minmax(a, b);
-            auto it = midpoint.find(key);
-            if (it != midpoint.end()) return it->second;
-            m.vertices.push_back(glm::normalize(m.vertices[a] + m.vertices[b]));
-            return midpoint[key] = uint32_t(m.vertices.size() - 1);
-        };
-        std::vector<std::array<uint32_t, 3>> next;
-        for (const auto& tri : m.triangles) {
-            const uint32_t a = mid(tri[0], tri[1]), b = mid(tri[1], tri[2]), c = mid(tri[2], tri[0]);
-            next.push_back({tri[0], a, c}), next.push_back({tri[1], b, a}), next.push_back({tri[2], c, b}), next.push_back({a, b, c});
-        }
-        m.triangles = next;
-    }
-    for (glm::vec3& v : m.vertices) v = center + r * v;
-    return m;
-}
+using test::icosphere;
 
 // The cube [lo, hi]^3 with each face split into n x n quads (2 triangles each), sharing vertices.
 Mesh split_cube(int n, glm::vec3 lo, glm::vec3 hi) {
@@ -84,7 +54,7 @@ Mesh split_cube(int n, glm::vec3 lo, glm::vec3 hi) {
 Scene scene_of(const Mesh& mesh, TriangleTest test) {
     SceneDescription d;
     d.materials.resize(1);
-    d.meshes.push_back({mesh.vertices, mesh.triangles, 0});
+    d.meshes.push_back(mesh);
     d.settings.accuracy.triangles = test;
     return build_scene(d);
 }

@@ -40,6 +40,10 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::IsMember({"schlick", "exact"}));
     cmd->add_option("--isa", o.isa_name, "Intersection kernels: scalar, sse4, avx2, avx512 or auto (the best this CPU runs)")
         ->check(CLI::IsMember({"auto", "scalar", "sse4", "avx2", "avx512"}));
+    cmd->add_option("--accel", o.accel_name,
+                    "Acceleration structure: auto (flat list for tiny scenes, else a BVH), bvh, or brute (flat list)")
+        ->check(CLI::IsMember({"auto", "bvh", "brute"}));
+    cmd->add_option("--bvh-width", o.render.bvh.node_width, "Children per BVH node: 4 or 8")->check(CLI::IsMember({4, 8}));
     cmd->add_option("--tile-size", o.render.tile_size, "Tile side in pixels")->check(CLI::Range(1, 65536));
     cmd->add_option("--batch-paths", o.render.batch_paths, "Camera paths per wavefront batch")
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
@@ -57,6 +61,7 @@ std::string with_si_prefix(double value) {
     if (value >= 1e9) s << std::fixed << value / 1e9 << " G";
     else if (value >= 1e6) s << std::fixed << value / 1e6 << " M";
     else if (value >= 1e3) s << std::fixed << value / 1e3 << " k";
+    else if (value == double(uint64_t(value))) s << uint64_t(value);
     else s << std::fixed << value;
     return s.str();
 }
@@ -86,11 +91,16 @@ DebugSample parse_debug_sample(const std::string& text, int width, int height) {
 
 void print_vec(std::ostream& out, const glm::vec3& v) { out << "(" << v.x << ", " << v.y << ", " << v.z << ")"; }
 
-int replay_sample(const Scene& scene, const DebugSample& d) {
+int replay_sample(const Scene& scene, const RenderOptions& options, const DebugSample& d) {
     RayCounts counts;
     std::vector<PathVertexRecord> vertices;
     const uint32_t pixel = uint32_t(d.y) * uint32_t(scene.settings.width) + uint32_t(d.x);
-    const glm::vec3 radiance = trace_reference_path(scene, pixel, d.sample, counts, &vertices);
+    // The same hits either way; a big scene is replayed through a BVH so it takes no longer than a render would.
+    Bvh bvh;
+    BvhView tree;
+    const bool use_bvh = resolve_accel(options.accel, scene.primitive_count()) == Accel::bvh;
+    if (use_bvh) bvh = build_bvh(scene, options.bvh), tree = bvh_view(bvh);
+    const glm::vec3 radiance = trace_reference_path(scene, pixel, d.sample, counts, &vertices, use_bvh ? &tree : nullptr);
     std::cout.precision(9);
     std::cout << "pixel (" << d.x << "," << d.y << ") sample " << d.sample << " seed " << scene.settings.seed << "\n";
     for (const PathVertexRecord& v : vertices) {
@@ -99,6 +109,10 @@ int replay_sample(const Scene& scene, const DebugSample& d) {
         print_vec(std::cout, v.position);
         std::cout << " normal ";
         print_vec(std::cout, v.normal);
+        if (v.shading_normal != v.normal) {
+            std::cout << " shading normal ";
+            print_vec(std::cout, v.shading_normal);
+        }
         std::cout << "\n    throughput ";
         print_vec(std::cout, v.throughput);
         std::cout << " emission added ";
@@ -134,7 +148,9 @@ int run_render_command(RenderCommandOptions& o) {
         const RenderSettings& settings = description.settings;
         const Scene scene = build_scene(description);
 
-        if (o.debug_sample) return replay_sample(scene, parse_debug_sample(*o.debug_sample, settings.width, settings.height));
+        o.render.accel = *parse_accel(o.accel_name);  // CLI checked membership
+        if (o.debug_sample)
+            return replay_sample(scene, o.render, parse_debug_sample(*o.debug_sample, settings.width, settings.height));
 
         if (o.outputs.empty()) o.outputs.push_back(std::filesystem::path(o.scene_path).stem().string() + ".png");
         for (const std::string& out : o.outputs) check_output_path(out);
@@ -171,6 +187,19 @@ int run_render_command(RenderCommandOptions& o) {
                       << with_si_prefix(double(c.camera_rays)) << ", bounce " << with_si_prefix(double(c.bounce_rays))
                       << ", shadow " << with_si_prefix(double(c.shadow_rays)) << " rays)\n";
             std::cout << "  NaN/Inf samples  " << c.nonfinite_samples << "\n";
+            if (result.accel == Accel::bvh) {
+                const BvhStats& b = result.bvh;
+                const double prims = double(std::max<std::size_t>(1, b.primitive_count));
+                std::cout << "  BVH              " << o.render.bvh.node_width << "-wide, " << with_si_prefix(double(b.primitive_count))
+                          << " primitives, " << with_si_prefix(double(b.node_count)) << " nodes, "
+                          << with_si_prefix(double(b.leaf_count)) << " leaves, SAH cost " << b.sah_cost << ", built in "
+                          << b.build_seconds << " s\n";
+                std::cout << "  BVH memory       " << with_si_prefix(double(b.node_bytes + b.primitive_bytes)) << "B ("
+                          << double(b.node_bytes) / prims << " B/primitive nodes, " << double(b.primitive_bytes) / prims
+                          << " B/primitive leaf data)\n";
+            } else {
+                std::cout << "  acceleration     none (flat list of " << scene.primitive_count() << " primitives)\n";
+            }
             for (const std::string& out : o.outputs) std::cout << "  wrote            " << out << "\n";
         }
         return 0;

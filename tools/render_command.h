@@ -26,6 +26,7 @@ struct RenderCommandOptions {
     RenderOptions render;
     std::string integrator_name = "wavefront";
     std::string isa_name = "auto";
+    std::string accel_name = "auto";
     std::optional<std::string> debug_sample;  // "X,Y,S": replay one sample instead of rendering
     bool quiet = false;
 };

@@ -59,6 +59,14 @@ public:
     // f(wo, wi), given cos_i = dot(n, wi). Zero below the surface.
     glm::vec3 operator()(const glm::vec3& wi, float cos_i) const {
         if (cos_i <= 0.0f || cos_o_ <= 0.0f) return glm::vec3(0.0f);
+        return without_horizon(wi, cos_i);
+    }
+
+    // f(wo, wi) for cos_i > 0 whatever side of n wo is on: about a shading normal, wo may be
+    // below it while above the geometric surface, and zero there would be a black facet.
+    // (Oren-Nayar's formula stays finite and below rho's albedo for cos_o < 0: its divisor is
+    // then cos_i, and sin_o < 1 only lowers the B term.)
+    glm::vec3 without_horizon(const glm::vec3& wi, float cos_i) const {
         if (lambertian_) return lambert_;
         return albedo_ * (kInvPi * oren_nayar_factor(oren_nayar_, cos_i, cos_o_, glm::dot(wi, wo_)));
     }
@@ -79,62 +87,75 @@ struct BsdfSample {
     glm::vec3 direction{0.0f};
     glm::vec3 weight{0.0f};  // f * |cos| / pdf, or the specular throughput
     bool specular = false;    // emission seen along it counts (no light sample covered it)
+    bool transmitted = false; // refracted through the surface rather than reflected
     bool valid = false;
 };
 
-// Samples the next direction. n_geom is the geometric normal (outward for spheres, winding for
-// triangles); d the incoming ray direction. u_choice and the Fresnel model only matter for glass.
-inline BsdfSample sample_bsdf(const Material& m, const glm::vec3& n_geom, const glm::vec3& d, float u0, float u1,
-                              float u_choice, FresnelModel fresnel = FresnelModel::schlick) {
+// The two halves of sample_bsdf, also called about a shading normal (shading_normal_bsdf.h).
+// Always inlined, each into both callers, so sample_bsdf compiles to what it was as one function.
+
+// A cosine-weighted direction about n (unit, facing the incoming direction d) and its weight
+// f * cos / pdf for a diffuse material. Invalid when rounding puts it on n's horizon.
+[[gnu::always_inline]] inline BsdfSample sample_diffuse(const Material& m, const glm::vec3& n, const glm::vec3& d, float u0,
+                                                        float u1) {
     BsdfSample s;
-    const bool front = glm::dot(d, n_geom) < 0.0f;
-    const glm::vec3 n = front ? n_geom : -n_geom;  // facing the incoming ray
-    switch (m.type) {
-        case MaterialType::lambertian:
-        case MaterialType::oren_nayar: {
-            const glm::vec3 local = sample_cosine_hemisphere(u0, u1);
-            s.direction = glm::normalize(Frame(n).to_world(local));
-            const float cos_i = glm::dot(n, s.direction);
-            if (cos_i <= 0.0f) return s;  // lost to rounding at the horizon
-            // f * cos / pdf with pdf = cos / pi: the albedo times the Oren-Nayar factor.
-            s.weight = m.albedo;
-            if (m.type == MaterialType::oren_nayar) {
-                const glm::vec3 wo = -d;
-                s.weight *= oren_nayar_factor(oren_nayar_terms(m.sigma), cos_i, glm::dot(n, wo), glm::dot(s.direction, wo));
-            }
-            s.valid = true;
-            return s;
-        }
-        case MaterialType::mirror:
-            s.direction = glm::normalize(reflect(d, n));
-            s.weight = m.reflectance;
-            s.specular = s.valid = true;
-            return s;
-        case MaterialType::glass: {
-            // Inside/outside is decided by the geometric normal: spheres' normals point outward.
-            // Radiance's eta^2 scaling on refraction is left out: with the camera and every
-            // light outside the glass, each path that enters also leaves and the factors cancel.
-            const float eta = front ? 1.0f / m.ior : m.ior;
-            const float cos_i = -glm::dot(d, n);
-            const auto refracted = refract(d, n, eta);
-            s.specular = s.valid = true;
-            s.weight = glm::vec3(1.0f);
-            if (refracted) {
-                const float cos_outside = front ? cos_i : refracted->cos_transmitted;
-                const float reflectance = fresnel == FresnelModel::exact
-                                              ? fresnel_dielectric(cos_i, refracted->cos_transmitted, eta)
-                                              : schlick_reflectance(cos_outside, m.ior);
-                // Choosing reflection with probability R makes the weight R / R = 1 either way.
-                if (u_choice >= reflectance) {
-                    s.direction = refracted->direction;
-                    return s;
-                }
-            }
-            s.direction = glm::normalize(reflect(d, n));  // Fresnel reflection or total internal reflection
+    const glm::vec3 local = sample_cosine_hemisphere(u0, u1);
+    s.direction = glm::normalize(Frame(n).to_world(local));
+    const float cos_i = glm::dot(n, s.direction);
+    if (cos_i <= 0.0f) return s;  // lost to rounding at the horizon
+    // f * cos / pdf with pdf = cos / pi: the albedo times the Oren-Nayar factor.
+    s.weight = m.albedo;
+    if (m.type == MaterialType::oren_nayar) {
+        const glm::vec3 wo = -d;
+        s.weight *= oren_nayar_factor(oren_nayar_terms(m.sigma), cos_i, glm::dot(n, wo), glm::dot(s.direction, wo));
+    }
+    s.valid = true;
+    return s;
+}
+
+// Mirror or glass about n (unit, facing the incoming direction d: dot(d, n) < 0). `front` says
+// whether d arrived from the outside of the glass (the side its geometric normal faces).
+[[gnu::always_inline]] inline BsdfSample sample_specular(const Material& m, const glm::vec3& n, bool front, const glm::vec3& d,
+                                                         float u_choice, FresnelModel fresnel) {
+    BsdfSample s;
+    s.specular = s.valid = true;
+    if (m.type == MaterialType::mirror) {
+        s.direction = glm::normalize(reflect(d, n));
+        s.weight = m.reflectance;
+        return s;
+    }
+    // Radiance's eta^2 scaling on refraction is left out: with the camera and every light
+    // outside the glass, each path that enters also leaves and the factors cancel.
+    const float eta = front ? 1.0f / m.ior : m.ior;
+    const float cos_i = -glm::dot(d, n);
+    const auto refracted = refract(d, n, eta);
+    s.weight = glm::vec3(1.0f);
+    if (refracted) {
+        const float cos_outside = front ? cos_i : refracted->cos_transmitted;
+        const float reflectance = fresnel == FresnelModel::exact ? fresnel_dielectric(cos_i, refracted->cos_transmitted, eta)
+                                                                 : schlick_reflectance(cos_outside, m.ior);
+        // Choosing reflection with probability R makes the weight R / R = 1 either way.
+        if (u_choice >= reflectance) {
+            s.direction = refracted->direction;
+            s.transmitted = true;
             return s;
         }
     }
+    s.direction = glm::normalize(reflect(d, n));  // Fresnel reflection or total internal reflection
     return s;
+}
+
+// Samples the next direction. n_geom is the geometric normal (outward for spheres, winding for
+// triangles); d the incoming ray direction. u_choice and the Fresnel model only matter for glass.
+// Inside/outside of glass is decided by the geometric normal: spheres' normals point outward.
+// Out of line, as g++ chose before there was a second sampler next to it: inlined into the path
+// continuation it costs the shade loop more than the call.
+[[gnu::noinline]] inline BsdfSample sample_bsdf(const Material& m, const glm::vec3& n_geom, const glm::vec3& d, float u0,
+                                                float u1, float u_choice, FresnelModel fresnel = FresnelModel::schlick) {
+    const bool front = glm::dot(d, n_geom) < 0.0f;
+    const glm::vec3 n = front ? n_geom : -n_geom;  // facing the incoming ray
+    if (m.is_specular()) return sample_specular(m, n, front, d, u_choice, fresnel);
+    return sample_diffuse(m, n, d, u0, u1);
 }
 
 }  // namespace wt

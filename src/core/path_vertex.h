@@ -14,6 +14,7 @@
 #include "core/ray_offset.h"
 #include "core/rng.h"
 #include "core/scene.h"
+#include "core/shading_normal_bsdf.h"
 
 namespace wt {
 
@@ -46,13 +47,16 @@ struct ShadowRay {
 
 // What every light sample at one diffuse vertex shares, computed once per vertex.
 struct LightSamplingPoint {
-    glm::vec3 normal;      // facing the incoming ray
-    glm::vec3 ray_origin;  // the shading point moved off its surface on that side
+    glm::vec3 normal;          // geometric, facing the incoming ray
+    glm::vec3 shading_normal;  // turned to the same side; `normal` itself when flat
+    glm::vec3 ray_origin;      // the shading point moved off its surface on that side
+    bool smooth;               // SurfacePoint::smooth
 };
 
 inline LightSamplingPoint light_sampling_point(const SurfacePoint& surface, const glm::vec3& d) {
     const glm::vec3 n = glm::dot(d, surface.normal) < 0.0f ? surface.normal : -surface.normal;
-    return {n, offset_ray_origin(surface.position, surface.error, n)};
+    return {n, surface.smooth ? shading_normal_facing(surface.shading_normal, n) : n,
+            offset_ray_origin(surface.position, surface.error, n), surface.smooth};
 }
 
 // The light samples of one diffuse vertex (next-event estimation). Sample `index` of `count`
@@ -67,26 +71,35 @@ public:
           at_(at),
           position_(surface.position),
           throughput_(throughput),
-          bsdf_(m, at.normal, -d),
+          bsdf_(m, at.shading_normal, -d),
           random_(key, bounce),
           count_(count),
           count_float_(float(count)) {}
 
     // Every light sample of the vertex, in index order; emit(const ShadowRay&) gets each one that
     // can contribute. One loop here rather than one call per sample in the caller: the shared
-    // state stays in registers across the samples.
+    // state stays in registers across the samples. Flat or folded BSDF is chosen once, here.
+    // (Not an out-of-line call for the folded loop: this object's address would escape into it,
+    // and g++ then reloads the shared state around every flat sample too.)
     template <typename Emit>
     void sample_all(Emit&& emit) const {
         ShadowRay s;
+        if (at_.smooth) {
+            for (uint32_t j = 0; j < count_; ++j)
+                if (sample<true>(j, s)) emit(s);
+            return;
+        }
         for (uint32_t j = 0; j < count_; ++j)
-            if (sample(j, s)) emit(s);
+            if (sample<false>(j, s)) emit(s);
     }
 
     // Writes light sample `index` to `s`; false, leaving `s` unspecified, when the sample cannot
-    // contribute (light seen from behind, point below the surface), so no ray is traced for it.
+    // contribute (light seen from behind, point below the geometric surface), so no ray is traced
+    // for it. `Folded`: the vertex has a shading normal, and the BSDF is folded_diffuse()'s K.
     // (An out-parameter, not std::optional: the 40-byte copy out of it was 4 % of the sample.)
     // Always inlined: g++ judges it too big, and as a call it spills and reloads the shared
     // state around every sample.
+    template <bool Folded>
     [[gnu::always_inline]] bool sample(uint32_t index, ShadowRay& s) const {
         const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
         const UniformPair point = random_.pair(base + dim::light_u);
@@ -101,8 +114,10 @@ public:
         const float cos_y = -glm::dot(light.normal, wi);
         if (cos_x <= 0.0f || cos_y <= 0.0f) return false;
 
-        const glm::vec3 f = bsdf_(wi, cos_x);
-        const float geometry = cos_x * cos_y / (dist2 * light.pdf_area * count_float_);
+        // Folded, K stands for f * cos_x: its cosines are about the shading normal.
+        const glm::vec3 f = Folded ? folded_diffuse(bsdf_, n, at_.shading_normal, wi, cos_x) : bsdf_(wi, cos_x);
+        const float cosine_x = Folded ? 1.0f : cos_x;
+        const float geometry = cosine_x * cos_y / (dist2 * light.pdf_area * count_float_);
         s.ray.origin = at_.ray_origin;
         // Both ends are moved off their surfaces, so neither the shading point's nor the light's
         // own triangle can block the ray.
@@ -119,7 +134,7 @@ private:
     LightSamplingPoint at_;
     glm::vec3 position_;  // the shading point, before the offset
     glm::vec3 throughput_;
-    DiffuseBsdfAtView bsdf_;
+    DiffuseBsdfAtView bsdf_;  // about the shading normal
     VertexRandom random_;
     uint32_t count_;
     float count_float_;
@@ -140,8 +155,12 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
     const VertexRandom random(key, bounce);
     const UniformPair direction = random.pair(dim::bsdf_u);
     const UniformPair choice_and_roulette = random.pair(dim::bsdf_choice);
-    const BsdfSample s = sample_bsdf(m, surface.normal, d, direction.first, direction.second, choice_and_roulette.first,
-                                     scene.settings.accuracy.fresnel);
+    const FresnelModel fresnel = scene.settings.accuracy.fresnel;
+    const BsdfSample s = surface.smooth ? sample_bsdf_about_shading_normal(m, surface.normal, surface.shading_normal, d,
+                                                                           direction.first, direction.second,
+                                                                           choice_and_roulette.first, fresnel)
+                                        : sample_bsdf(m, surface.normal, d, direction.first, direction.second,
+                                                      choice_and_roulette.first, fresnel);
     if (!s.valid) return std::nullopt;
     PathContinuation next;
     next.throughput = throughput * s.weight;

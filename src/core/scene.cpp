@@ -1,5 +1,9 @@
 #include "core/scene.h"
 
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
 namespace wt {
 
 Scene build_scene(const SceneDescription& description) {
@@ -8,17 +12,30 @@ Scene build_scene(const SceneDescription& description) {
     scene.camera = Camera(description.camera, description.settings.width, description.settings.height);
     scene.materials = description.materials;
     // Parallelograms first (TriangleSoA keeps them as a prefix), and only for the test that
-    // knows them.
+    // knows them. A mesh with vertex normals stays triangles: there is no interpolating them
+    // over a parallelogram.
     const bool parallelograms = description.settings.accuracy.triangles == TriangleTest::moller_trumbore;
-    auto as_parallelogram = [&](const TriangleMesh& m) { return parallelograms && m.parallelogram; };
-    for (const TriangleMesh& mesh : description.meshes) {
-        if (as_parallelogram(mesh))
-            scene.triangles.push_parallelogram(mesh.vertices[0], mesh.vertices[1], mesh.vertices[3], mesh.material);
+    auto as_parallelogram = [&](const TriangleMesh& m) { return parallelograms && m.parallelogram && m.normals.empty(); };
+    // The shading-normal table exists only if some triangle will read it.
+    const bool smooth = std::any_of(description.meshes.begin(), description.meshes.end(), [](const TriangleMesh& m) {
+        return !m.normals.empty() && !m.triangles.empty();
+    });
+    for (std::size_t k = 0; k < description.meshes.size(); ++k) {
+        const TriangleMesh& mesh = description.meshes[k];
+        if (!mesh.normals.empty() && mesh.normals.size() != mesh.vertices.size())
+            throw std::invalid_argument("build_scene: mesh " + std::to_string(k) + " has " + std::to_string(mesh.normals.size()) +
+                                        " normals for " + std::to_string(mesh.vertices.size()) + " vertices");
+        if (!as_parallelogram(mesh)) continue;
+        scene.triangles.push_parallelogram(mesh.vertices[0], mesh.vertices[1], mesh.vertices[3], mesh.material);
+        if (smooth) scene.shading_normals.push_flat();
     }
     for (const TriangleMesh& mesh : description.meshes) {
         if (as_parallelogram(mesh)) continue;
         for (const auto& tri : mesh.triangles) {
             scene.triangles.push_back(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], mesh.material);
+            if (!smooth) continue;
+            if (mesh.normals.empty()) scene.shading_normals.push_flat();
+            else scene.shading_normals.push(mesh.normals[tri[0]], mesh.normals[tri[1]], mesh.normals[tri[2]]);
         }
     }
     for (const Sphere& sphere : description.spheres) {

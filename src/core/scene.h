@@ -14,6 +14,7 @@
 #include "core/ray.h"
 #include "core/ray_offset.h"
 #include "core/scene_description.h"
+#include "core/shading_normals.h"
 
 namespace wt {
 
@@ -22,21 +23,33 @@ struct Scene {
     Camera camera;
     std::vector<Material> materials;
     TriangleSoA triangles;
+    ShadingNormalTable shading_normals;  // empty unless some mesh has vertex normals
     SphereSoA spheres;
     LightTable lights;
 
     uint32_t primitive_count() const { return uint32_t(triangles.size() + spheres.size()); }
 };
 
-// Validates nothing: descriptions come from the loader (which validates) or from code.
+// Validates nothing but what would read out of bounds (a mesh's normal count differing from
+// its vertex count, std::invalid_argument): descriptions come from the loader (which
+// validates) or from code. A mesh with vertex normals is never stored as a parallelogram.
 Scene build_scene(const SceneDescription& description);
 
 // What the shade stage needs to know about a hit.
 struct SurfacePoint {
     glm::vec3 position;
     glm::vec3 error;   // bound on the rounding error of position, for offset_ray_origin()
-    glm::vec3 normal;  // geometric; winding for triangles, outward for spheres
+    // Geometric: winding for triangles, outward for spheres. It alone decides which side a ray
+    // is on: ray offsets, emission's front face, glass inside/outside, what is below the surface.
+    glm::vec3 normal;
+    // What scattering is computed about: the interpolated vertex normal (unit, in the vertex
+    // normals' orientation, which may be opposite to `normal`), or `normal` itself, the same
+    // bits, on flat triangles and spheres.
+    glm::vec3 shading_normal;
     uint32_t material;
+    // shading_normal != normal, decided once here: the vertex code takes the flat path, the one
+    // every scene without vertex normals runs, on a single flag test.
+    bool smooth;
 };
 
 inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
@@ -49,12 +62,20 @@ inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hi
         s.position = t.vertex0(hit.prim) + hit.u * t.edge1(hit.prim) + hit.v * t.edge2(hit.prim);
         s.error = triangle_point_error(t.vertex0(hit.prim), t.edge1(hit.prim), t.edge2(hit.prim), hit.u, hit.v);
         s.normal = t.normal(hit.prim);
+        s.shading_normal = s.normal;
+        s.smooth = false;
+        if (!scene.shading_normals.empty()) {
+            s.shading_normal = scene.shading_normals.at(hit.prim, hit.u, hit.v, s.normal);
+            s.smooth = s.shading_normal != s.normal;
+        }
         s.material = t.material[hit.prim];
     } else {
         const uint32_t i = hit.prim - triangle_count;
         const glm::vec3 c = scene.spheres.center(i);
         const float r = scene.spheres.radius[i];
         s.normal = glm::normalize(ray.origin + hit.t * ray.direction - c);
+        s.shading_normal = s.normal;
+        s.smooth = false;
         // Projected back onto the sphere, for the same reason.
         s.position = c + r * s.normal;
         s.error = sphere_point_error(c, r, s.normal);

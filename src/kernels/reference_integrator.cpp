@@ -1,12 +1,18 @@
 #include "kernels/reference_integrator.h"
 
 #include "core/path_vertex.h"
+#include "kernels/accel/bvh_single_ray.h"
 #include "kernels/scene_intersect.h"
 
 namespace wt {
 
 glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
-                               std::vector<PathVertexRecord>* record) {
+                               std::vector<PathVertexRecord>* record, const BvhView* bvh) {
+    const AccuracySettings& accuracy = scene.settings.accuracy;
+    auto closest = [&](const Ray& r) { return bvh ? bvh_intersect_closest(*bvh, accuracy, r) : intersect_closest(scene, r); };
+    auto blocked = [&](const Ray& r, float tmax) {
+        return bvh ? bvh_intersect_any(*bvh, accuracy, r, tmax) : intersect_any(scene, r, tmax);
+    };
     const uint64_t key = path_key(scene.settings.seed, pixel, sample);
     const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
     Ray ray = camera_ray(scene, pixel, sample, key);
@@ -16,12 +22,12 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
     bool count_emission = true;  // camera rays and specular bounces: no light sample covered them
 
     for (uint32_t bounce = 0;; ++bounce) {
-        const Hit hit = intersect_closest(scene, ray);
+        const Hit hit = closest(ray);
         if (!hit.found()) break;  // no environment light
         const SurfacePoint surface = surface_at(scene, ray, hit);
         const Material& m = scene.materials[surface.material];
-        PathVertexRecord vertex{bounce, hit, surface.position, surface.normal, surface.material, throughput,
-                                glm::vec3(0.0f), 0, 0, glm::vec3(0.0f)};
+        PathVertexRecord vertex{bounce, hit, surface.position, surface.normal, surface.shading_normal, surface.material,
+                                throughput, glm::vec3(0.0f), 0, 0, glm::vec3(0.0f)};
 
         if (count_emission) {
             vertex.emission_added = throughput * emitted_towards(m, surface.normal, ray.direction);
@@ -33,7 +39,7 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
             lights.sample_all([&](const ShadowRay& shadow) {
                 ++counts.shadow_rays;
                 ++vertex.shadow_rays_traced;
-                if (intersect_any(scene, shadow.ray, shadow.tmax)) return;
+                if (blocked(shadow.ray, shadow.tmax)) return;
                 ++vertex.shadow_rays_unoccluded;
                 vertex.direct_added += shadow.contribution;
                 radiance += shadow.contribution;
@@ -51,13 +57,13 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
     return radiance;
 }
 
-void render_reference_tile(const Scene& scene, const Tile& tile, Film& film, RayCounts& counts) {
+void render_reference_tile(const Scene& scene, const Tile& tile, Film& film, RayCounts& counts, const BvhView* bvh) {
     const uint32_t spp = uint32_t(scene.settings.spp);
     for (int y = tile.y0; y < tile.y1; ++y) {
         for (int x = tile.x0; x < tile.x1; ++x) {
             const uint32_t pixel = uint32_t(y) * uint32_t(scene.settings.width) + uint32_t(x);
             for (uint32_t s = 0; s < spp; ++s) {
-                const glm::vec3 radiance = trace_reference_path(scene, pixel, s, counts);
+                const glm::vec3 radiance = trace_reference_path(scene, pixel, s, counts, nullptr, bvh);
                 ++counts.samples;
                 if (!film.add_sample(pixel, radiance)) ++counts.nonfinite_samples;
             }

@@ -10,6 +10,7 @@
 
 #include "core/film.h"
 #include "core/scene.h"
+#include "kernels/accel/bvh_view.h"
 #include "kernels/render_stats.h"
 #include "kernels/tiles.h"
 
@@ -19,7 +20,7 @@ namespace wt {
 struct PathVertexRecord {
     uint32_t bounce;
     Hit hit;
-    glm::vec3 position, normal;
+    glm::vec3 position, normal, shading_normal;  // the shading normal equals `normal` when flat
     uint32_t material;
     glm::vec3 throughput;        // arriving at this vertex
     glm::vec3 emission_added;
@@ -28,9 +29,12 @@ struct PathVertexRecord {
 };
 
 // Radiance of sample `sample` of pixel `pixel`. If `record` is given, each vertex is appended.
+// Rays are traced through `bvh` when given (the scalar kernels: the same hits as the flat
+// loops, found in logarithmic time), else against every primitive.
 glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
-                               std::vector<PathVertexRecord>* record = nullptr);
+                               std::vector<PathVertexRecord>* record = nullptr, const BvhView* bvh = nullptr);
 
-void render_reference_tile(const Scene& scene, const Tile& tile, Film& film, RayCounts& counts);
+void render_reference_tile(const Scene& scene, const Tile& tile, Film& film, RayCounts& counts,
+                           const BvhView* bvh = nullptr);
 
 }  // namespace wt

@@ -34,15 +34,23 @@ RenderResult render(const Scene& scene, const RenderOptions& options, Film& film
                                     "with the accuracy settings it is rendered with");
 
     const Isa isa = options.isa.value_or(best_supported_isa());
-    const IntersectContext context{scene_view(scene), &intersect_kernels(isa, scene.settings.accuracy)};
-
     ThreadPool pool(threads);
+    const Accel accel = resolve_accel(options.accel, scene.primitive_count());
+    Bvh bvh;
+    BvhView bvh_tree;
+    if (accel == Accel::bvh) {
+        bvh = build_bvh(scene, options.bvh, &pool);
+        bvh_tree = bvh_view(bvh);
+    }
+    const BvhView* tree = accel == Accel::bvh ? &bvh_tree : nullptr;
+    const IntersectContext context{scene_view(scene), &intersect_kernels(isa, scene.settings.accuracy), tree};
+
     const auto start = std::chrono::steady_clock::now();
     pool.parallel_for(tiles.size(), [&](std::size_t item, int worker) {
         const Tile& tile = tiles[item];
         RayCounts& c = counts[std::size_t(worker)];
         if (options.integrator == Integrator::reference) {
-            render_reference_tile(scene, tile, film, c);
+            render_reference_tile(scene, tile, film, c, tree);
             return;
         }
         auto& ws = workspaces[std::size_t(worker)];
@@ -62,6 +70,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options, Film& film
     result.seconds = std::chrono::duration<double>(stop - start).count();
     result.threads = threads;
     result.isa = isa;
+    result.accel = accel;
+    result.bvh = bvh.stats();
     return result;
 }
 

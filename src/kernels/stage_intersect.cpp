@@ -3,10 +3,13 @@
 
 namespace wt {
 
-// Rays of a queue go in packets of N against one primitive at a time: on the flat primitive
-// list of a small scene this beat one ray against N primitives (bench/README.md).
+// Without a BVH, rays of a queue go in packets of N against one primitive at a time: on the
+// flat primitive list of a small scene this beat one ray against N primitives (bench/README.md).
 void intersect_closest_stage(const IntersectContext& context, const RayQueue& rays, HitQueue& hits) {
-    context.kernels->closest_raypacket(context.scene, ray_view(rays), hit_view(hits));
+    if (context.bvh)
+        context.kernels->closest_bvh(*context.bvh, ray_view(rays), hit_view(hits));
+    else
+        context.kernels->closest_raypacket(context.scene, ray_view(rays), hit_view(hits));
 }
 
 }  // namespace wt

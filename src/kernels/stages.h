@@ -16,10 +16,12 @@ namespace wt {
 void generate_camera_rays(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end,
                           PathTable& paths, RayQueue& rays);
 
-// What the intersect and shadow stages trace against, and with which kernels.
+// What the intersect and shadow stages trace against, and with which kernels: the BVH when
+// the render has one, else the flat primitive lists.
 struct IntersectContext {
     SceneView scene;
     const IntersectKernels* kernels;
+    const BvhView* bvh = nullptr;
 };
 
 // Closest hit of every ray in the queue.

@@ -118,9 +118,9 @@ void primpacket_brute_force(const SceneView& scene, const RayView& rays, QueryOu
         const TriangleRays<T, N> tr(r.o, r.d);
         SingleRayState<Q, N> state(r.tmax);
         for_each_planar_range<T>(tri, [&](auto shape, uint32_t begin, uint32_t end) {
-            test_planar_run<shape.value>(tr, tri, begin, end, ConsecutiveIds{0}, state);
+            test_planar_run<shape.value>(tr, FlatTriangles<T>{tri, begin}, end - begin, state);
         });
-        test_sphere_run<S>(r, sph, 0, sph.count, ConsecutiveIds{int32_t(sph.first_prim)}, state);
+        test_sphere_run<S>(r, FlatSpheres{sph, 0}, sph.count, state);
         state.write(out, ray);
     }
 }

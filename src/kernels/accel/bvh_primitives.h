@@ -1,8 +1,8 @@
 #pragma once
-// The scene's primitives copied into BVH leaf order, holding only what the scene's primitive
-// tests read (v0, the edges and the scaled normal for Moller-Trumbore; the three vertices for
-// the watertight test; centre and radius for spheres) and each one's scene id. A leaf is then a
-// contiguous run, loaded with the same SoA loads as the flat kernels and returning their bits.
+// The scene's primitives copied into BVH leaf order, leaf by leaf in the block layout of
+// bvh_view.h, holding only what the scene's primitive tests read (v0, the edges and the scaled
+// normal for Moller-Trumbore; the three vertices for the watertight test; centre and radius for
+// spheres) and each one's scene id, so a leaf test returns the flat kernels' bits.
 
 #include <cstddef>
 #include <cstdint>
@@ -16,19 +16,15 @@ namespace wt {
 
 struct BvhPrimitives {
     TriangleTest test = TriangleTest::moller_trumbore;
-    AlignedVector<float> v0x, v0y, v0z, e1x, e1y, e1z, e2x, e2y, e2z, nx, ny, nz;  // Moller-Trumbore
-    AlignedVector<float> v1x, v1y, v1z, v2x, v2y, v2z;                            // watertight (and v0)
-    AlignedVector<uint32_t> planar_prim;  // leaf-order index -> scene primitive id
-    AlignedVector<float> cx, cy, cz, radius;
-    AlignedVector<uint32_t> sphere_prim;
+    AlignedVector<float> planar, spheres;
+    uint32_t planar_count = 0, sphere_count = 0;
 
-    uint32_t planar_count() const { return uint32_t(planar_prim.size()); }
-    uint32_t sphere_count() const { return uint32_t(sphere_prim.size()); }
-    // Appends scene primitive `id` (a triangle or parallelogram if below the triangle count).
-    void append(const Scene& scene, uint32_t id);
-    std::size_t bytes() const;
-    TriangleView planar_view() const;
-    SphereView sphere_view() const;
+    uint32_t planar_rows() const { return test == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows; }
+    // Room for `planar` planar primitives and `spheres` spheres.
+    void reserve(std::size_t planar_prims, std::size_t sphere_prims);
+    // Appends one leaf: scene primitives ids[0 .. count), all planar or all spheres.
+    void append_leaf(const Scene& scene, const uint32_t* ids, uint32_t count, bool sphere);
+    std::size_t bytes() const { return (planar.size() + spheres.size()) * sizeof(float); }
 };
 
 }  // namespace wt

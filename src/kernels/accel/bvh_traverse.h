@@ -72,18 +72,20 @@ template <TriangleTest T, SphereTest S, Query Q, int L>
 inline void test_leaf(const BvhView& bvh, uint32_t ref, const SingleRay<L>& ray, const TriangleRays<T, L>& tri_ray,
                       SingleRayState<Q, L>& state) {
     const uint32_t first = ref & kBvhFirstMask;
-    const uint32_t end = first + ((ref >> kBvhCountShift) & 7u) + 1u;
+    const uint32_t count = ((ref >> kBvhCountShift) & 7u) + 1u;
+    constexpr uint32_t rows = T == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
+    const TriangleBlock<T> triangles{bvh.planar + std::size_t(first) * rows, count};
     switch (BvhLeafKind((ref >> kBvhKindShift) & 3u)) {
         case BvhLeafKind::parallelogram:
             // Only Moller-Trumbore scenes have parallelograms (build_scene splits quads otherwise).
             if constexpr (T == TriangleTest::moller_trumbore)
-                test_planar_run<Planar::parallelogram>(tri_ray, bvh.planar, first, end, IdArray{bvh.planar_prim}, state);
+                test_planar_run<Planar::parallelogram>(tri_ray, triangles, count, state);
             break;
         case BvhLeafKind::triangle:
-            test_planar_run<Planar::triangle>(tri_ray, bvh.planar, first, end, IdArray{bvh.planar_prim}, state);
+            test_planar_run<Planar::triangle>(tri_ray, triangles, count, state);
             break;
         case BvhLeafKind::sphere:
-            test_sphere_run<S>(ray, bvh.spheres, first, end, IdArray{bvh.sphere_prim}, state);
+            test_sphere_run<S>(ray, SphereBlock{bvh.spheres + std::size_t(first) * kSphereRows, count}, count, state);
             break;
         default:  // kBvhEmptyChild: the root of a scene with nothing to hit
             break;

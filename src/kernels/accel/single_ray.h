@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "kernels/accel/bvh_view.h"
 #include "kernels/accel/query.h"
 #include "kernels/primitives/lanes.h"
 #include "kernels/primitives/sphere_lanes.h"
@@ -102,49 +103,101 @@ struct SingleRayState<Query::any, N> {
     void write(uint8_t* occluded, uint32_t ray) const { occluded[ray] = blocked; }
 };
 
-// Primitive ids of a run: consecutive from a base (the flat list), or read from the leaf-order
-// id array (a BVH leaf).
-struct ConsecutiveIds {
-    int32_t base;
+// Where a run's primitives come from: the flat SoA arrays of the scene (ids consecutive from a
+// base), or one BVH leaf block (bvh_view.h: rows of k floats, the ids in the last row).
+template <TriangleTest T>
+struct FlatTriangles {
+    const TriangleView& tri;
+    uint32_t first;
     template <int N>
-    vint<N> at(uint32_t first, int) const {
-        return vint<N>::step() + vint<N>(base + int32_t(first));
+    TriangleLanes<N> load(uint32_t c, int n) const {
+        return load_triangles<T, N>(tri, first + c, n);
+    }
+    template <int N>
+    vint<N> ids(uint32_t c, int) const {
+        return vint<N>::step() + vint<N>(int32_t(first + c));
     }
 };
 
-struct IdArray {
-    const uint32_t* ids;
+template <TriangleTest T>
+struct TriangleBlock {
+    const float* block;
+    uint32_t k;  // primitives in the leaf: the row length
     template <int N>
-    vint<N> at(uint32_t first, int count) const {
-        return vint<N>::load_partial(reinterpret_cast<const int32_t*>(ids) + first, count, vint<N>(-1));
+    Vec3<N> rows(uint32_t row, uint32_t c, int n) const {
+        const float* p = block + row * k + c;
+        const vfloat<N> zero(0.0f);
+        return {vfloat<N>::load_partial(p, n, zero), vfloat<N>::load_partial(p + k, n, zero),
+                vfloat<N>::load_partial(p + 2 * k, n, zero)};
+    }
+    template <int N>
+    TriangleLanes<N> load(uint32_t c, int n) const {
+        if constexpr (T == TriangleTest::watertight)
+            return {rows<N>(0, c, n), rows<N>(3, c, n), rows<N>(6, c, n), {}};
+        else
+            return {rows<N>(0, c, n), rows<N>(3, c, n), rows<N>(6, c, n), rows<N>(9, c, n)};
+    }
+    template <int N>
+    vint<N> ids(uint32_t c, int n) const {
+        constexpr uint32_t id_row = (T == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows) - 1;
+        return vint<N>::load_partial(reinterpret_cast<const int32_t*>(block + id_row * k + c), n, vint<N>(-1));
     }
 };
 
-// Planar primitives [first, end) of shape P against the ray, N at a time.
-template <Planar P, TriangleTest T, Query Q, int N, typename Ids>
-inline void test_planar_run(const TriangleRays<T, N>& ray, const TriangleView& tri, uint32_t first, uint32_t end,
-                            const Ids& ids, SingleRayState<Q, N>& state) {
-    for (uint32_t c = first; c < end && !state.done(); c += N) {
-        const int n = lanes_left<N>(end, c);
+struct FlatSpheres {
+    const SphereView& sph;
+    uint32_t first;
+    template <int N>
+    void load(uint32_t c, int n, Vec3<N>& center, vfloat<N>& radius) const {
+        center = load_partial<N>(sph.cx, sph.cy, sph.cz, first + c, n);
+        radius = vfloat<N>::load_partial(sph.radius + first + c, n, vfloat<N>(0.0f));
+    }
+    template <int N>
+    vint<N> ids(uint32_t c, int) const {
+        return vint<N>::step() + vint<N>(int32_t(sph.first_prim + first + c));
+    }
+};
+
+struct SphereBlock {
+    const float* block;
+    uint32_t k;
+    template <int N>
+    void load(uint32_t c, int n, Vec3<N>& center, vfloat<N>& radius) const {
+        const float* p = block + c;
+        const vfloat<N> zero(0.0f);
+        center = {vfloat<N>::load_partial(p, n, zero), vfloat<N>::load_partial(p + k, n, zero),
+                  vfloat<N>::load_partial(p + 2 * k, n, zero)};
+        radius = vfloat<N>::load_partial(p + 3 * k, n, zero);
+    }
+    template <int N>
+    vint<N> ids(uint32_t c, int n) const {
+        return vint<N>::load_partial(reinterpret_cast<const int32_t*>(block + (kSphereRows - 1) * k + c), n, vint<N>(-1));
+    }
+};
+
+// `count` planar primitives of shape P from `source` against the ray, N at a time.
+template <Planar P, TriangleTest T, Query Q, int N, typename Source>
+inline void test_planar_run(const TriangleRays<T, N>& ray, const Source& source, uint32_t count, SingleRayState<Q, N>& state) {
+    for (uint32_t c = 0; c < count && !state.done(); c += N) {
+        const int n = lanes_left<N>(count, c);
         const vbool<N> lanes = vint<N>::step() < vint<N>(n);
         LaneHits<N> h;
         const vbool<N> hit =
-            lanes & intersect_triangles<P>(ray, load_triangles<T, N>(tri, c, n), lanes, vfloat<N>(state.limit), h);
-        state.record(hit, h, ids.template at<N>(c, n));
+            lanes & intersect_triangles<P>(ray, source.template load<N>(c, n), lanes, vfloat<N>(state.limit), h);
+        state.record(hit, h, source.template ids<N>(c, n));
     }
 }
 
-template <SphereTest S, Query Q, int N, typename Ids>
-inline void test_sphere_run(const SingleRay<N>& ray, const SphereView& sph, uint32_t first, uint32_t end, const Ids& ids,
-                            SingleRayState<Q, N>& state) {
-    for (uint32_t c = first; c < end && !state.done(); c += N) {
-        const int n = lanes_left<N>(end, c);
-        vfloat<N> t;
-        const vfloat<N> radius = vfloat<N>::load_partial(sph.radius + c, n, vfloat<N>(0.0f));
-        const vbool<N> hit = (vint<N>::step() < vint<N>(n)) &
-                             intersect_spheres<S>(ray.o, ray.d, load_partial<N>(sph.cx, sph.cy, sph.cz, c, n), radius,
-                                                  vfloat<N>(state.limit), t);
-        state.record(hit, sphere_hits(t), ids.template at<N>(c, n));
+template <SphereTest S, Query Q, int N, typename Source>
+inline void test_sphere_run(const SingleRay<N>& ray, const Source& source, uint32_t count, SingleRayState<Q, N>& state) {
+    for (uint32_t c = 0; c < count && !state.done(); c += N) {
+        const int n = lanes_left<N>(count, c);
+        Vec3<N> center;
+        vfloat<N> radius, t;
+        source.template load<N>(c, n, center, radius);
+        const vbool<N> hit =
+            (vint<N>::step() < vint<N>(n)) & intersect_spheres<S>(ray.o, ray.d, center, radius, vfloat<N>(state.limit), t);
+        state.record(hit, sphere_hits(t), source.template ids<N>(c, n));
     }
 }
 

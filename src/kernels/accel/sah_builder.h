@@ -1,0 +1,58 @@
+#pragma once
+// The binary tree the wide BVH is collapsed from: binned SAH over all three axes (Wald 2007,
+// "On fast construction of SAH-based bounding volume hierarchies"), leaves of one primitive kind.
+//
+// Deterministic: every split depends on the primitives alone (bin counts and boxes are sums and
+// min/max, exact in any order), so the tree's shape is the same for any thread count. Node
+// indices are handed out by an atomic counter and so depend on the schedule; nothing downstream
+// sees them, since the wide nodes are laid out by a walk from the root (bvh_build.cpp).
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "kernels/accel/bvh_boxes.h"
+
+namespace wt {
+
+class ThreadPool;
+
+// A primitive as the builder sees it: its box, its scene id and its kind (BvhLeafKind), laid
+// out so each half loads as one SSE register. 32 bytes, moved by the partitions.
+struct alignas(16) PrimRef {
+    float lo[3];
+    uint32_t id;
+    float hi[3];
+    uint32_t kind;
+
+    Box box() const { return Box::of(_mm_load_ps(lo), _mm_load_ps(hi)); }
+    __m128 centroid_times_two() const { return _mm_add_ps(_mm_load_ps(lo), _mm_load_ps(hi)); }
+};
+
+struct BinaryNode {
+    Box box;
+    uint32_t first, count;  // a leaf: refs [first, first + count); count == 0 for an inner node
+    uint32_t left, right;   // an inner node's children
+    bool is_leaf() const { return count > 0; }
+};
+
+// Costs in units of one primitive test. A node's cost is that of testing the ray against the
+// node's box; leaves are tested with SIMD over up to 8 primitives at once, so a leaf test
+// costs less per primitive than a node visit does (tuned with bench_intersect, see
+// bench/README.md).
+struct SahSettings {
+    uint32_t max_leaf_size = 8;
+    float node_cost = 1.0f;
+    float primitive_cost = 1.0f;
+};
+
+struct BinaryTree {
+    std::unique_ptr<BinaryNode[]> nodes;
+    uint32_t root = 0;
+    uint32_t max_depth = 0;  // in nodes, root = 1
+};
+
+// Reorders `refs` so every leaf is a contiguous run.
+BinaryTree build_binary_sah(std::vector<PrimRef>& refs, const SahSettings& settings, ThreadPool& pool);
+
+}  // namespace wt
