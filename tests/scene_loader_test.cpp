@@ -518,7 +518,7 @@ TEST(SceneErrors, MissingMaterialType) {
 
 TEST(SceneErrors, MissingShapeType) {
     expect_scene_error(mutated([](Json& j) { j["shapes"][1].erase("type"); }),
-                       "shapes[1].type: required key is missing (one of quad, mesh, sphere)");
+                       "shapes[1].type: required key is missing (one of quad, mesh, sphere, mesh_file)");
 }
 
 TEST(SceneErrors, MissingShapeMaterial) {
@@ -708,7 +708,7 @@ TEST(SceneErrors, NoShapes) {
 
 TEST(SceneErrors, UnknownShapeType) {
     expect_scene_error(mutated([](Json& j) { j["shapes"][0]["type"] = "cube"; }),
-                       "shapes[0].type: unknown shape type (allowed: quad, mesh, sphere), got string \"cube\"");
+                       "shapes[0].type: unknown shape type (allowed: quad, mesh, sphere, mesh_file), got string \"cube\"");
 }
 
 TEST(SceneErrors, MissingMaterialIsNamed) {

@@ -11,6 +11,8 @@ packages=(
   libopencv-core-dev            # Debian 12's OpenImageIO CMake target names /usr/include/opencv4
   nlohmann-json3-dev            # scene files
   libcli11-dev                  # command line
+  libtinyobjloader-dev          # mesh files: OBJ and MTL
+  libtinygltf-dev               # mesh files: glTF 2.0 (.gltf, .glb)
   libgtest-dev                  # tests
   libbenchmark-dev              # benchmarks
   valgrind                      # callgrind, for the instruction-count performance gate

@@ -144,6 +144,8 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
 int run_render_command(RenderCommandOptions& o) {
     try {
         SceneDescription description = load_scene_file(o.scene_path);
+        if (!o.quiet)
+            for (const std::string& note : description.notes) std::cerr << "wavetrace: note: " << note << "\n";
         apply_overrides(o, description.settings);
         const RenderSettings& settings = description.settings;
         const Scene scene = build_scene(description);

@@ -81,6 +81,9 @@ struct SceneDescription {
     std::vector<Material> materials;
     std::vector<TriangleMesh> meshes;
     std::vector<Sphere> spheres;
+    // One line each, for the user, about what the loader skipped or could not map (degenerate
+    // triangles dropped from a mesh file, its textures, ...); never an error. The CLI prints them.
+    std::vector<std::string> notes;
 };
 
 }  // namespace wt

@@ -28,7 +28,7 @@ struct RayPacket {
 };
 
 template <int N>
-inline RayPacket<N> load_rays(const RayView& rays, uint32_t first) {
+WT_KERNEL_INLINE RayPacket<N> load_rays(const RayView& rays, uint32_t first) {
     RayPacket<N> r;
     r.count = lanes_left<N>(rays.count, first);
     r.o = load_partial<N>(rays.ox, rays.oy, rays.oz, first, r.count);
@@ -52,7 +52,7 @@ struct PacketState<Query::closest, N> {
     bool done() const { return false; }
     // Branch-free: with incoherent rays "no lane hit this primitive" is a coin flip, and
     // the mispredicted branch cost more than the selects it skipped (bench/README.md).
-    void record(const vbool<N>& hit, const LaneHits<N>& h, const vint<N>& id) {
+    [[gnu::always_inline]] void record(const vbool<N>& hit, const LaneHits<N>& h, const vint<N>& id) {
         best = select(hit, h, best);
         best_prim = simd::select(hit, id, best_prim);
     }
@@ -72,7 +72,7 @@ struct PacketState<Query::any, N> {
     explicit PacketState(const RayPacket<N>& r) : blocked(false), inactive(~r.active), tmax(r.tmax) {}
     const vfloat<N>& limit() const { return tmax; }
     bool done() const { return simd::all(blocked | inactive); }
-    void record(const vbool<N>& hit, const LaneHits<N>&, const vint<N>&) { blocked |= hit; }
+    [[gnu::always_inline]] void record(const vbool<N>& hit, const LaneHits<N>&, const vint<N>&) { blocked |= hit; }
     void write(uint8_t* occluded, uint32_t first, int count) const {
         const uint32_t bits = simd::movemask(blocked);
         for (int lane = 0; lane < count; ++lane) occluded[first + uint32_t(lane)] = uint8_t((bits >> lane) & 1u);

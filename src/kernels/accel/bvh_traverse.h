@@ -33,7 +33,7 @@ struct BoxRay {
     vfloat<V> o[3], inv_d[3];
     int near_row[3], far_row[3];
 
-    BoxRay(const RayView& rays, uint32_t i) {
+    [[gnu::always_inline]] BoxRay(const RayView& rays, uint32_t i) {
         const float o_[3] = {rays.ox[i], rays.oy[i], rays.oz[i]};
         const float d_[3] = {rays.dx[i], rays.dy[i], rays.dz[i]};
         for (int a = 0; a < 3; ++a) {
@@ -51,7 +51,7 @@ struct BoxRay {
 // component) is dropped by the NaN rule of simd::min / max (NaN first loses), which only widens
 // the interval.
 template <int W, int V>
-inline uint32_t enter_children(const BvhNode<W>& node, const BoxRay<V>& r, float limit, float* t_near) {
+WT_KERNEL_INLINE uint32_t enter_children(const BvhNode<W>& node, const BoxRay<V>& r, float limit, float* t_near) {
     uint32_t mask = 0;
     for (int c = 0; c < W; c += V) {
         vfloat<V> near[3], far[3];
@@ -69,7 +69,7 @@ inline uint32_t enter_children(const BvhNode<W>& node, const BoxRay<V>& r, float
 }
 
 template <TriangleTest T, SphereTest S, Query Q, int L>
-inline void test_leaf(const BvhView& bvh, uint32_t ref, const SingleRay<L>& ray, const TriangleRays<T, L>& tri_ray,
+WT_KERNEL_INLINE void test_leaf(const BvhView& bvh, uint32_t ref, const SingleRay<L>& ray, const TriangleRays<T, L>& tri_ray,
                       SingleRayState<Q, L>& state) {
     const uint32_t first = ref & kBvhFirstMask;
     const uint32_t count = ((ref >> kBvhCountShift) & 7u) + 1u;
@@ -93,7 +93,7 @@ inline void test_leaf(const BvhView& bvh, uint32_t ref, const SingleRay<L>& ray,
 }
 
 // Descending by distance, so the nearest child is on top of the stack. At most W entries.
-inline void sort_far_to_near(uint32_t* refs, float* t, int count) {
+WT_KERNEL_INLINE void sort_far_to_near(uint32_t* refs, float* t, int count) {
     for (int i = 1; i < count; ++i) {
         const uint32_t r = refs[i];
         const float ti = t[i];
@@ -104,7 +104,7 @@ inline void sort_far_to_near(uint32_t* refs, float* t, int count) {
 }
 
 template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L>
-inline void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, SingleRayState<Q, L>& state) {
+WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, SingleRayState<Q, L>& state) {
     const BvhNode<W>* nodes = static_cast<const BvhNode<W>*>(bvh.nodes);
     const SingleRay<L> ray = broadcast_ray<L>(rays, i);
     const TriangleRays<T, L> tri_ray(ray.o, ray.d);

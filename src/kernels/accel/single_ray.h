@@ -27,18 +27,18 @@ struct SingleRay {
 };
 
 template <int N>
-inline SingleRay<N> broadcast_ray(const RayView& rays, uint32_t i) {
+WT_KERNEL_INLINE SingleRay<N> broadcast_ray(const RayView& rays, uint32_t i) {
     return {broadcast<N>(rays.ox, rays.oy, rays.oz, i), broadcast<N>(rays.dx, rays.dy, rays.dz, i),
             rays.tmax ? rays.tmax[i] : kInfinity};
 }
 
 template <int N>
-inline int lanes_left(uint32_t end, uint32_t first) {
+WT_KERNEL_INLINE int lanes_left(uint32_t end, uint32_t first) {
     return int(end - first < uint32_t(N) ? end - first : uint32_t(N));
 }
 
 // The next float above a positive finite x.
-inline float next_float_up(float x) {
+WT_KERNEL_INLINE float next_float_up(float x) {
     uint32_t bits;
     std::memcpy(&bits, &x, sizeof bits);
     ++bits;
@@ -57,12 +57,12 @@ struct SingleRayState<Query::closest, N> {
     float closest;  // the smallest t found (tmax while there is none): boxes beyond it are skipped
     float limit;    // tmax, then the float after `closest`, so an equal t still competes on its id
 
-    explicit SingleRayState(float tmax)
+    [[gnu::always_inline]] explicit SingleRayState(float tmax)
         : best(sphere_hits(vfloat<N>(tmax))), best_prim(-1), closest(tmax), limit(tmax) {}
 
     bool done() const { return false; }
 
-    void record(const vbool<N>& hit, const LaneHits<N>& h, const vint<N>& ids) {
+    [[gnu::always_inline]] void record(const vbool<N>& hit, const LaneHits<N>& h, const vint<N>& ids) {
         if (simd::none(hit)) return;
         const vbool<N> better = hit & ((h.t < best.t) | ((h.t == best.t) & (ids < best_prim)));
         best = select(better, h, best);
@@ -99,7 +99,7 @@ struct SingleRayState<Query::any, N> {
     explicit SingleRayState(float tmax) : closest(tmax), limit(tmax) {}
 
     bool done() const { return blocked; }
-    void record(const vbool<N>& hit, const LaneHits<N>&, const vint<N>&) { blocked = blocked || simd::any(hit); }
+    [[gnu::always_inline]] void record(const vbool<N>& hit, const LaneHits<N>&, const vint<N>&) { blocked = blocked || simd::any(hit); }
     void write(uint8_t* occluded, uint32_t ray) const { occluded[ray] = blocked; }
 };
 
@@ -110,11 +110,11 @@ struct FlatTriangles {
     const TriangleView& tri;
     uint32_t first;
     template <int N>
-    TriangleLanes<N> load(uint32_t c, int n) const {
+    [[gnu::always_inline]] TriangleLanes<N> load(uint32_t c, int n) const {
         return load_triangles<T, N>(tri, first + c, n);
     }
     template <int N>
-    vint<N> ids(uint32_t c, int) const {
+    [[gnu::always_inline]] vint<N> ids(uint32_t c, int) const {
         return vint<N>::step() + vint<N>(int32_t(first + c));
     }
 };
@@ -124,21 +124,21 @@ struct TriangleBlock {
     const float* block;
     uint32_t k;  // primitives in the leaf: the row length
     template <int N>
-    Vec3<N> rows(uint32_t row, uint32_t c, int n) const {
+    [[gnu::always_inline]] Vec3<N> rows(uint32_t row, uint32_t c, int n) const {
         const float* p = block + row * k + c;
         const vfloat<N> zero(0.0f);
         return {vfloat<N>::load_partial(p, n, zero), vfloat<N>::load_partial(p + k, n, zero),
                 vfloat<N>::load_partial(p + 2 * k, n, zero)};
     }
     template <int N>
-    TriangleLanes<N> load(uint32_t c, int n) const {
+    [[gnu::always_inline]] TriangleLanes<N> load(uint32_t c, int n) const {
         if constexpr (T == TriangleTest::watertight)
             return {rows<N>(0, c, n), rows<N>(3, c, n), rows<N>(6, c, n), {}};
         else
             return {rows<N>(0, c, n), rows<N>(3, c, n), rows<N>(6, c, n), rows<N>(9, c, n)};
     }
     template <int N>
-    vint<N> ids(uint32_t c, int n) const {
+    [[gnu::always_inline]] vint<N> ids(uint32_t c, int n) const {
         constexpr uint32_t id_row = (T == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows) - 1;
         return vint<N>::load_partial(reinterpret_cast<const int32_t*>(block + id_row * k + c), n, vint<N>(-1));
     }
@@ -148,12 +148,12 @@ struct FlatSpheres {
     const SphereView& sph;
     uint32_t first;
     template <int N>
-    void load(uint32_t c, int n, Vec3<N>& center, vfloat<N>& radius) const {
+    [[gnu::always_inline]] void load(uint32_t c, int n, Vec3<N>& center, vfloat<N>& radius) const {
         center = load_partial<N>(sph.cx, sph.cy, sph.cz, first + c, n);
         radius = vfloat<N>::load_partial(sph.radius + first + c, n, vfloat<N>(0.0f));
     }
     template <int N>
-    vint<N> ids(uint32_t c, int) const {
+    [[gnu::always_inline]] vint<N> ids(uint32_t c, int) const {
         return vint<N>::step() + vint<N>(int32_t(sph.first_prim + first + c));
     }
 };
@@ -162,7 +162,7 @@ struct SphereBlock {
     const float* block;
     uint32_t k;
     template <int N>
-    void load(uint32_t c, int n, Vec3<N>& center, vfloat<N>& radius) const {
+    [[gnu::always_inline]] void load(uint32_t c, int n, Vec3<N>& center, vfloat<N>& radius) const {
         const float* p = block + c;
         const vfloat<N> zero(0.0f);
         center = {vfloat<N>::load_partial(p, n, zero), vfloat<N>::load_partial(p + k, n, zero),
@@ -170,14 +170,14 @@ struct SphereBlock {
         radius = vfloat<N>::load_partial(p + 3 * k, n, zero);
     }
     template <int N>
-    vint<N> ids(uint32_t c, int n) const {
+    [[gnu::always_inline]] vint<N> ids(uint32_t c, int n) const {
         return vint<N>::load_partial(reinterpret_cast<const int32_t*>(block + (kSphereRows - 1) * k + c), n, vint<N>(-1));
     }
 };
 
 // `count` planar primitives of shape P from `source` against the ray, N at a time.
 template <Planar P, TriangleTest T, Query Q, int N, typename Source>
-inline void test_planar_run(const TriangleRays<T, N>& ray, const Source& source, uint32_t count, SingleRayState<Q, N>& state) {
+WT_KERNEL_INLINE void test_planar_run(const TriangleRays<T, N>& ray, const Source& source, uint32_t count, SingleRayState<Q, N>& state) {
     for (uint32_t c = 0; c < count && !state.done(); c += N) {
         const int n = lanes_left<N>(count, c);
         const vbool<N> lanes = vint<N>::step() < vint<N>(n);
@@ -189,7 +189,7 @@ inline void test_planar_run(const TriangleRays<T, N>& ray, const Source& source,
 }
 
 template <SphereTest S, Query Q, int N, typename Source>
-inline void test_sphere_run(const SingleRay<N>& ray, const Source& source, uint32_t count, SingleRayState<Q, N>& state) {
+WT_KERNEL_INLINE void test_sphere_run(const SingleRay<N>& ray, const Source& source, uint32_t count, SingleRayState<Q, N>& state) {
     for (uint32_t c = 0; c < count && !state.done(); c += N) {
         const int n = lanes_left<N>(count, c);
         Vec3<N> center;

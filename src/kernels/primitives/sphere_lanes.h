@@ -11,7 +11,7 @@ inline namespace WT_SIMD_ISA {
 
 // The textbook quadratic: t = -b -+ sqrt(b^2 - c), the far root for origins inside.
 template <SphereTest S, int N>
-inline vbool<N> intersect_spheres(const Vec3<N>& o, const Vec3<N>& d, const Vec3<N>& center, const vfloat<N>& r,
+WT_KERNEL_INLINE vbool<N> intersect_spheres(const Vec3<N>& o, const Vec3<N>& d, const Vec3<N>& center, const vfloat<N>& r,
                                   const vfloat<N>& tmax, vfloat<N>& t) {
     const vfloat<N> zero(0.0f);
     if constexpr (S == SphereTest::quadratic) {

@@ -20,7 +20,7 @@ struct TriangleRays;
 template <int N>
 struct TriangleRays<TriangleTest::moller_trumbore, N> {
     Vec3<N> o, d;
-    TriangleRays(const Vec3<N>& origin, const Vec3<N>& direction) : o(origin), d(direction) {}
+    [[gnu::always_inline]] TriangleRays(const Vec3<N>& origin, const Vec3<N>& direction) : o(origin), d(direction) {}
 };
 
 // Watertight: per lane, the axis permutation (as masks) and the shear of watertight_ray().
@@ -30,7 +30,7 @@ struct TriangleRays<TriangleTest::watertight, N> {
     vbool<N> kx0, kx1, ky0, ky1, kz0, kz1;
     vfloat<N> sx, sy, sz;
 
-    TriangleRays(const Vec3<N>& origin, const Vec3<N>& d) : o(origin) {
+    [[gnu::always_inline]] TriangleRays(const Vec3<N>& origin, const Vec3<N>& d) : o(origin) {
         const vfloat<N> ax = simd::abs(d.x), ay = simd::abs(d.y), az = simd::abs(d.z);
         const vbool<N> x_over_y = ax > ay;
         kz0 = x_over_y & (ax > az);
@@ -58,7 +58,7 @@ struct TriangleLanes {
 };
 
 template <TriangleTest T, int N>
-inline TriangleLanes<N> broadcast_triangle(const TriangleView& t, uint32_t i) {
+WT_KERNEL_INLINE TriangleLanes<N> broadcast_triangle(const TriangleView& t, uint32_t i) {
     if constexpr (T == TriangleTest::watertight)
         return {broadcast<N>(t.v0x, t.v0y, t.v0z, i), broadcast<N>(t.v1x, t.v1y, t.v1z, i), broadcast<N>(t.v2x, t.v2y, t.v2z, i), {}};
     else
@@ -67,7 +67,7 @@ inline TriangleLanes<N> broadcast_triangle(const TriangleView& t, uint32_t i) {
 }
 
 template <TriangleTest T, int N>
-inline TriangleLanes<N> load_triangles(const TriangleView& t, uint32_t first, int count) {
+WT_KERNEL_INLINE TriangleLanes<N> load_triangles(const TriangleView& t, uint32_t first, int count) {
     if constexpr (T == TriangleTest::watertight)
         return {load_partial<N>(t.v0x, t.v0y, t.v0z, first, count), load_partial<N>(t.v1x, t.v1y, t.v1z, first, count),
                 load_partial<N>(t.v2x, t.v2y, t.v2z, first, count), {}};
@@ -85,7 +85,7 @@ using PlanarShape = std::integral_constant<Planar, P>;
 // Calls f(shape, begin, end) for the parallelogram entries, then for the triangles. Only
 // Moller-Trumbore scenes have parallelograms (build_scene splits quads for the watertight test).
 template <TriangleTest T, typename F>
-inline void for_each_planar_range(const TriangleView& tri, F&& f) {
+WT_KERNEL_INLINE void for_each_planar_range(const TriangleView& tri, F&& f) {
     const uint32_t parallelograms = T == TriangleTest::moller_trumbore ? tri.parallelogram_count : 0u;
     const uint32_t split = parallelograms < tri.count ? parallelograms : tri.count;  // a view cut short stays in bounds
     f(PlanarShape<Planar::parallelogram>{}, 0u, split);
@@ -96,7 +96,7 @@ inline void for_each_planar_range(const TriangleView& tri, F&& f) {
 // primitive_intersect.h (which explains the rearrangement). A lane hits when t is in (0, tmax)
 // and the barycentrics are inside; den == 0 (parallel ray, degenerate triangle) and NaNs never hit.
 template <Planar P, int N>
-inline vbool<N> intersect_triangles(const TriangleRays<TriangleTest::moller_trumbore, N>& r, const TriangleLanes<N>& tri,
+WT_KERNEL_INLINE vbool<N> intersect_triangles(const TriangleRays<TriangleTest::moller_trumbore, N>& r, const TriangleLanes<N>& tri,
                                     const vbool<N>&, const vfloat<N>& tmax, LaneHits<N>& h) {
     const Vec3<N>&v0 = tri.p0, &e1 = tri.p1, &e2 = tri.p2, &n = tri.n;
     const vfloat<N> den = dot(r.d, n);
@@ -121,15 +121,11 @@ inline vbool<N> intersect_triangles(const TriangleRays<TriangleTest::moller_trum
     return inside & (h.t < tmax);
 }
 
-// px*qy - py*qx, recomputed in double in the lanes where float gives exactly 0 (as
-// edge_function() in primitive_intersect.h). Only `active` lanes are retried, so padding
-// lanes never cost a fallback.
+// The lanes of e (= px*qy - py*qx in float) that came out exactly 0, recomputed in double.
+// Out of line: it runs for a handful of rays in a million, and inlined it would crowd the loop.
 template <int N>
-inline vfloat<N> edge_function(const vfloat<N>& px, const vfloat<N>& py, const vfloat<N>& qx, const vfloat<N>& qy,
-                               const vbool<N>& active) {
-    const vfloat<N> e = px * qy - py * qx;
-    uint32_t zero_lanes = simd::movemask(active & (e == vfloat<N>(0.0f)));
-    if (zero_lanes == 0) return e;
+[[gnu::noinline]] vfloat<N> edge_function_retry(vfloat<N> e, vfloat<N> px, vfloat<N> py, vfloat<N> qx, vfloat<N> qy,
+                                                uint32_t zero_lanes) {
     alignas(64) float out[N], a[N], b[N], c[N], d[N];
     vfloat<N>::storeu(out, e), vfloat<N>::storeu(a, px), vfloat<N>::storeu(b, qy), vfloat<N>::storeu(c, py),
         vfloat<N>::storeu(d, qx);
@@ -140,10 +136,22 @@ inline vfloat<N> edge_function(const vfloat<N>& px, const vfloat<N>& py, const v
     return vfloat<N>::loadu(out);
 }
 
+// px*qy - py*qx, recomputed in double in the lanes where float gives exactly 0 (as
+// edge_function() in primitive_intersect.h). Only `active` lanes are retried, so padding
+// lanes never cost a fallback.
+template <int N>
+WT_KERNEL_INLINE vfloat<N> edge_function(const vfloat<N>& px, const vfloat<N>& py, const vfloat<N>& qx, const vfloat<N>& qy,
+                                         const vbool<N>& active) {
+    const vfloat<N> e = px * qy - py * qx;
+    const uint32_t zero_lanes = simd::movemask(active & (e == vfloat<N>(0.0f)));
+    if (__builtin_expect(zero_lanes == 0, 1)) return e;
+    return edge_function_retry<N>(e, px, py, qx, qy, zero_lanes);
+}
+
 // Woop, Benthin & Wald 2013, as intersect_triangle_watertight() in primitive_intersect.h.
 // Triangles only (for_each_planar_range gives it an empty parallelogram range).
 template <Planar, int N>
-inline vbool<N> intersect_triangles(const TriangleRays<TriangleTest::watertight, N>& r, const TriangleLanes<N>& tri,
+WT_KERNEL_INLINE vbool<N> intersect_triangles(const TriangleRays<TriangleTest::watertight, N>& r, const TriangleLanes<N>& tri,
                                     const vbool<N>& active, const vfloat<N>& tmax, LaneHits<N>& h) {
     const Vec3<N> a = tri.p0 - r.o, b = tri.p1 - r.o, c = tri.p2 - r.o;
     const vfloat<N> az = pick(a, r.kz0, r.kz1), bz = pick(b, r.kz0, r.kz1), cz = pick(c, r.kz0, r.kz1);

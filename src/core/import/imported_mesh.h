@@ -1,0 +1,53 @@
+#pragma once
+// What a mesh file holds, as its format reader found it: plain data, in the file's own
+// coordinates, before the scene's transform, degenerate triangles or normals are dealt with
+// (place_mesh.h does that, the same way for every format).
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/scene_description.h"
+
+namespace wt {
+
+// A format reader's complaint, "FILE:LINE: problem" or "FILE: byte N: problem" or "FILE:
+// accessor 3: problem": whatever the format lets it name. The scene loader prefixes the scene
+// file and the JSON path of the shape.
+struct MeshFileError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// A range of vertices that the file places with one matrix (glTF: a node's world transform;
+// OBJ and PLY: one piece, the identity).
+struct MeshPiece {
+    std::size_t first_vertex = 0;
+    std::size_t vertex_count = 0;
+    glm::dmat4 transform{1.0};
+};
+
+// A material as the file describes it, already mapped to ours; `name` is the file's own.
+struct ImportedMaterial {
+    Material material;
+    std::vector<std::string> unmapped;  // what the file said that we cannot render (textures...)
+};
+
+struct ImportedMesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;  // the file's vertex normals: empty, or one per position
+    std::vector<std::array<uint32_t, 3>> triangles;
+    // Per triangle, an index into `materials`, or kNoMaterial; empty when the file has none.
+    std::vector<uint32_t> triangle_materials;
+    std::vector<ImportedMaterial> materials;
+    std::vector<MeshPiece> pieces;   // cover `positions` in order
+    std::vector<std::string> notes;  // what was skipped, for the user (one line each)
+
+    static constexpr uint32_t kNoMaterial = UINT32_MAX;
+};
+
+}  // namespace wt

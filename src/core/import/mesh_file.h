@@ -1,0 +1,24 @@
+#pragma once
+// The one entry to the mesh-file formats: the extension picks the reader.
+
+#include <string>
+
+#include "core/import/imported_mesh.h"
+
+namespace wt {
+
+// .obj (with its .mtl files), .ply (ASCII or binary, either endianness), .gltf (+ .bin) or .glb,
+// case-insensitive. Throws MeshFileError naming `path` (and the line, byte or accessor where the
+// format allows) for an unreadable or malformed file, an index out of range, a NaN or infinite
+// coordinate, a face with fewer than 3 vertices, or a file without a triangle.
+ImportedMesh read_mesh_file(const std::string& path);
+
+// The first line of a library's message, which is often several lines of which the first says it.
+std::string first_line(const std::string& text);
+
+// The format readers, each in its own file; read_mesh_file() checks what is common to all.
+ImportedMesh read_obj_file(const std::string& path);
+ImportedMesh read_ply_file(const std::string& path);
+ImportedMesh read_gltf_file(const std::string& path);
+
+}  // namespace wt

@@ -1,0 +1,27 @@
+#pragma once
+// What every format's mesh goes through on its way into the scene: its pieces placed by their
+// transforms, zero-area triangles dropped, and the shading normals chosen.
+
+#include <cstddef>
+
+#include <glm/mat4x4.hpp>
+
+#include "core/import/imported_mesh.h"
+
+namespace wt {
+
+enum class NormalsMode {
+    file,    // the file's vertex normals if it has them, else none (flat)
+    smooth,  // angle-weighted vertex normals (vertex_normals.h), whatever the file has
+    flat,    // none: shade with the geometric normal
+};
+
+// In place. Positions go through scene_transform * piece.transform (in double, rounded to float
+// once; not at all when that product is exactly the identity, so the file's floats stay bit for
+// bit), normals through its inverse transpose and are renormalised. A piece whose transform
+// mirrors (negative determinant) has its triangles' winding reversed, so the front face stays
+// the side its normals point to. Returns how many zero-area triangles were dropped (judged after
+// the transform, as triangle_size.h does for the scene's own triangles).
+std::size_t place_mesh(ImportedMesh& mesh, const glm::dmat4& scene_transform, NormalsMode normals);
+
+}  // namespace wt

@@ -1,0 +1,298 @@
+// PLY (Turk 1994; the format as Paul Bourke documents it): a text header, then the elements'
+// records in ASCII or binary of either byte order. Read in one pass through a fixed buffer, so
+// every message can name the line (ASCII) or byte offset (binary) of the record at fault.
+// Our own reader rather than assimp's: see README.md, Dependencies.
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+
+#include "core/import/file_bytes.h"
+#include "core/import/mesh_file.h"
+#include "core/import/polygon_fan.h"
+
+namespace wt {
+namespace {
+
+enum class PlyFormat { ascii, binary_little_endian, binary_big_endian };
+
+enum class PlyType { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
+
+struct PlyProperty {
+    std::string name;
+    PlyType type = PlyType::float32;  // for a list: the type of its items
+    bool is_list = false;
+    PlyType count_type = PlyType::uint8;
+};
+
+struct PlyElement {
+    std::string name;
+    uint64_t count = 0;
+    std::vector<PlyProperty> properties;
+};
+
+struct PlyHeader {
+    PlyFormat format = PlyFormat::ascii;
+    std::vector<PlyElement> elements;
+};
+
+bool parse_type(const std::string& word, PlyType& type) {
+    static const struct { const char* name; PlyType type; } kTypes[] = {
+        {"char", PlyType::int8},     {"int8", PlyType::int8},       {"uchar", PlyType::uint8},
+        {"uint8", PlyType::uint8},   {"short", PlyType::int16},     {"int16", PlyType::int16},
+        {"ushort", PlyType::uint16}, {"uint16", PlyType::uint16},   {"int", PlyType::int32},
+        {"int32", PlyType::int32},   {"uint", PlyType::uint32},     {"uint32", PlyType::uint32},
+        {"float", PlyType::float32}, {"float32", PlyType::float32}, {"double", PlyType::float64},
+        {"float64", PlyType::float64}};
+    for (const auto& t : kTypes)
+        if (word == t.name) {
+            type = t.type;
+            return true;
+        }
+    return false;
+}
+
+std::size_t type_size(PlyType t) {
+    switch (t) {
+    case PlyType::int8: case PlyType::uint8: return 1;
+    case PlyType::int16: case PlyType::uint16: return 2;
+    case PlyType::int32: case PlyType::uint32: case PlyType::float32: return 4;
+    case PlyType::float64: return 8;
+    }
+    return 0;
+}
+
+bool is_integer_type(PlyType t) { return t != PlyType::float32 && t != PlyType::float64; }
+
+// Reads the records of one file; `where()` names the current record for messages.
+class PlyReader {
+public:
+    explicit PlyReader(const std::string& path) : path_(path), in_(path) {}
+
+    ImportedMesh read() {
+        read_header();
+        ImportedMesh mesh;
+        mesh.pieces.push_back({});
+        for (const PlyElement& element : header_.elements) read_element(element, mesh);
+        mesh.pieces[0].vertex_count = mesh.positions.size();
+        if (mesh.positions.empty()) fail_at_file("the file has no vertices (an empty mesh)");
+        if (!has_normals_) mesh.normals.clear();
+        return mesh;
+    }
+
+private:
+    [[noreturn]] void fail_at_file(const std::string& what) const { throw MeshFileError(path_ + ": " + what); }
+
+    [[noreturn]] void fail(const std::string& what) const { throw MeshFileError(where() + ": " + what); }
+
+    std::string where() const {
+        if (header_.format == PlyFormat::ascii || in_header_) return path_ + ":" + std::to_string(line_);
+        return path_ + ": byte " + std::to_string(record_offset_) + " (" + record_name_ + ")";
+    }
+
+    void read_header() {
+        std::string line;
+        const auto next = [&]() {
+            if (!in_.read_line(line)) fail("the header ends before end_header");
+            ++line_;
+        };
+        next();
+        if (line != "ply") fail("not a PLY file: the first line must be \"ply\"");
+        bool have_format = false;
+        for (;;) {
+            next();
+            std::istringstream words(line);
+            std::string keyword;
+            words >> keyword;
+            if (keyword == "end_header") break;
+            if (keyword.empty() || keyword == "comment" || keyword == "obj_info") continue;
+            if (keyword == "format") {
+                std::string format, version;
+                words >> format >> version;
+                if (format == "ascii") header_.format = PlyFormat::ascii;
+                else if (format == "binary_little_endian") header_.format = PlyFormat::binary_little_endian;
+                else if (format == "binary_big_endian") header_.format = PlyFormat::binary_big_endian;
+                else fail("unknown format \"" + format + "\" (allowed: ascii, binary_little_endian, binary_big_endian)");
+                if (version != "1.0") fail("unsupported PLY version \"" + version + "\" (only 1.0)");
+                have_format = true;
+            } else if (keyword == "element") {
+                PlyElement element;
+                long long count = -1;
+                words >> element.name >> count;
+                if (element.name.empty() || words.fail() || count < 0) fail("malformed element line: \"" + line + "\"");
+                element.count = uint64_t(count);
+                header_.elements.push_back(element);
+            } else if (keyword == "property") {
+                if (header_.elements.empty()) fail("property before the first element: \"" + line + "\"");
+                PlyProperty p;
+                std::string type;
+                words >> type;
+                if (type == "list") {
+                    std::string count_type, item_type;
+                    words >> count_type >> item_type;
+                    p.is_list = true;
+                    if (!parse_type(count_type, p.count_type) || !is_integer_type(p.count_type) ||
+                        !parse_type(item_type, p.type))
+                        fail("malformed list property: \"" + line + "\"");
+                } else if (!parse_type(type, p.type)) {
+                    fail("unknown property type \"" + type + "\"");
+                }
+                words >> p.name;
+                if (p.name.empty()) fail("property without a name: \"" + line + "\"");
+                header_.elements.back().properties.push_back(p);
+            } else {
+                fail("unknown header keyword \"" + keyword + "\"");
+            }
+        }
+        if (!have_format) fail("the header has no format line");
+        in_header_ = false;
+        for (const PlyElement& e : header_.elements)
+            if (e.name == "vertex") vertex_count_ = e.count;
+        if (vertex_count_ > UINT32_MAX) fail("more than 2^32 - 1 vertices");
+    }
+
+    // One value of the current record, as double (exact for every PLY integer type).
+    double value(PlyType type) {
+        if (header_.format == PlyFormat::ascii) return ascii_value(type);
+        unsigned char bytes[8];
+        const std::size_t n = type_size(type);
+        if (!in_.read(bytes, n))
+            fail("the file ends inside this record (" + std::to_string(in_.size()) + " bytes in the file)");
+        // The host is little-endian (x86-64, AArch64 as Debian runs them).
+        if (header_.format == PlyFormat::binary_big_endian)
+            for (std::size_t i = 0; i < n / 2; ++i) std::swap(bytes[i], bytes[n - 1 - i]);
+        switch (type) {
+        case PlyType::int8: return double(int8_t(bytes[0]));
+        case PlyType::uint8: return double(bytes[0]);
+        case PlyType::int16: { int16_t v; std::memcpy(&v, bytes, 2); return v; }
+        case PlyType::uint16: { uint16_t v; std::memcpy(&v, bytes, 2); return v; }
+        case PlyType::int32: { int32_t v; std::memcpy(&v, bytes, 4); return v; }
+        case PlyType::uint32: { uint32_t v; std::memcpy(&v, bytes, 4); return v; }
+        case PlyType::float32: { float v; std::memcpy(&v, bytes, 4); return v; }
+        case PlyType::float64: { double v; std::memcpy(&v, bytes, 8); return v; }
+        }
+        return 0.0;
+    }
+
+    double ascii_value(PlyType type) {
+        while (*cursor_ == ' ' || *cursor_ == '\t') ++cursor_;
+        if (*cursor_ == '\0') fail("too few values on this line for element \"" + record_name_ + "\"");
+        char* end = nullptr;
+        const double v = std::strtod(cursor_, &end);
+        const std::string token(cursor_, std::strcspn(cursor_, " \t"));
+        if (end == cursor_ || (*end != '\0' && *end != ' ' && *end != '\t')) fail("not a number: \"" + token + "\"");
+        if (is_integer_type(type) && !(v == std::floor(v))) fail("expected an integer, got \"" + token + "\"");
+        cursor_ = end;
+        return v;
+    }
+
+    void begin_record(const std::string& name, uint64_t index) {
+        record_name_ = name + " " + std::to_string(index);
+        if (header_.format != PlyFormat::ascii) {
+            record_offset_ = in_.offset();
+            return;
+        }
+        do {  // blank lines between records are tolerated
+            if (!in_.read_line(line_buffer_)) fail("the file ends before " + record_name_);
+            ++line_;
+        } while (line_buffer_.find_first_not_of(" \t") == std::string::npos);
+        cursor_ = line_buffer_.c_str();
+    }
+
+    void end_record() {
+        if (header_.format != PlyFormat::ascii) return;
+        while (*cursor_ == ' ' || *cursor_ == '\t') ++cursor_;
+        if (*cursor_ != '\0') fail("extra values at the end of the line: \"" + std::string(cursor_) + "\"");
+    }
+
+    void read_element(const PlyElement& element, ImportedMesh& mesh) {
+        const bool is_vertex = element.name == "vertex", is_face = element.name == "face";
+        int xyz[3] = {-1, -1, -1}, nxyz[3] = {-1, -1, -1}, indices = -1;
+        for (int i = 0; i < int(element.properties.size()); ++i) {
+            const PlyProperty& p = element.properties[std::size_t(i)];
+            for (int k = 0; k < 3; ++k) {
+                if (p.name == std::string(1, char('x' + k))) xyz[k] = i;
+                if (p.name == "n" + std::string(1, char('x' + k))) nxyz[k] = i;
+            }
+            if (p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) indices = i;
+        }
+        if (is_vertex) {
+            if (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0) fail_at_file("the vertex element lacks an x, y or z property");
+            has_normals_ = nxyz[0] >= 0 && nxyz[1] >= 0 && nxyz[2] >= 0;
+            // Never trust a count for an allocation before the bytes are there to back it.
+            const uint64_t cap = in_.size() / 4;
+            mesh.positions.reserve(std::size_t(std::min(element.count, cap)));
+            if (has_normals_) mesh.normals.reserve(std::size_t(std::min(element.count, cap)));
+        }
+        if (is_face && indices < 0) fail_at_file("the face element has no vertex_indices list");
+
+        double values[16];
+        std::vector<uint32_t> polygon;
+        for (uint64_t r = 0; r < element.count; ++r) {
+            begin_record(element.name, r);
+            for (int i = 0; i < int(element.properties.size()); ++i) {
+                const PlyProperty& p = element.properties[std::size_t(i)];
+                if (!p.is_list) {
+                    const double v = value(p.type);
+                    if (i < 16) values[i] = v;
+                    continue;
+                }
+                const double count = value(p.count_type);
+                if (count < 0) fail("negative list length " + std::to_string(int64_t(count)));
+                if (i != indices || !is_face) {
+                    for (uint64_t k = 0; k < uint64_t(count); ++k) value(p.type);
+                    continue;
+                }
+                if (count < 3) fail("a face needs at least 3 vertices, got " + std::to_string(int64_t(count)));
+                polygon.clear();
+                for (uint64_t k = 0; k < uint64_t(count); ++k) {
+                    const double index = value(p.type);
+                    if (!(index >= 0 && index < double(vertex_count_)))
+                        fail("vertex index " + std::to_string(int64_t(index)) + " out of range (the file has " +
+                             std::to_string(vertex_count_) + " vertices)");
+                    polygon.push_back(uint32_t(index));
+                }
+                append_polygon_fan(polygon, mesh.triangles);
+            }
+            end_record();
+            if (is_vertex) read_vertex(values, xyz, nxyz, mesh);
+        }
+    }
+
+    void read_vertex(const double* values, const int* xyz, const int* nxyz, ImportedMesh& mesh) {
+        glm::vec3 p, n;
+        for (int k = 0; k < 3; ++k) {
+            if (xyz[k] >= 16 || (has_normals_ && nxyz[k] >= 16)) fail("x, y, z, nx, ny, nz must be among the first 16 properties");
+            p[k] = float(values[xyz[k]]);
+            if (has_normals_) n[k] = float(values[nxyz[k]]);
+        }
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            fail("vertex position is not finite: " + std::to_string(p.x) + " " + std::to_string(p.y) + " " +
+                 std::to_string(p.z));
+        mesh.positions.push_back(p);
+        if (!has_normals_) return;
+        if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
+            fail("vertex normal is not finite");
+        mesh.normals.push_back(n);
+    }
+
+    std::string path_;
+    FileBytes in_;
+    PlyHeader header_;
+    bool in_header_ = true;
+    bool has_normals_ = false;
+    uint64_t vertex_count_ = 0;
+    uint64_t line_ = 0;
+    uint64_t record_offset_ = 0;
+    std::string record_name_;
+    std::string line_buffer_;
+    const char* cursor_ = "";
+};
+
+}  // namespace
+
+ImportedMesh read_ply_file(const std::string& path) { return PlyReader(path).read(); }
+
+}  // namespace wt

@@ -1,0 +1,197 @@
+// PLY files through the scene loader: ASCII and binary of both byte orders, polygons, normals,
+// and every kind of bad input, each named by line (ASCII) or byte offset (binary).
+
+#include "import_test_files.h"
+
+namespace {
+
+using wt::SceneDescription;
+using wt::TriangleMesh;
+using wt::test::binary_ply;
+using wt::test::expect_mesh_error;
+using Triangles = std::vector<std::array<uint32_t, 3>>;
+
+using PlyImport = wt::test::ImportTest;
+
+// A square and a triangle, with normals; vertex 4 is off the square's plane.
+const std::vector<std::array<float, 3>> kVertices{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5f, 0.25f, 1}};
+const std::vector<std::array<float, 3>> kNormals{{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, -0.6f, 0.8f}};
+const std::vector<std::vector<int32_t>> kFaces{{0, 1, 2, 3}, {0, 1, 4}};
+
+const std::string kAsciiPly = R"(ply
+format ascii 1.0
+comment a square and a triangle
+element vertex 5
+property float x
+property float y
+property float z
+property float nx
+property float ny
+property float nz
+element face 2
+property list uchar int vertex_indices
+end_header
+0 0 0 0 0 1
+1 0 0 0 0 1
+1 1 0 0 0 1
+0 1 0 0 0 1
+0.5 0.25 1 0 -0.6 0.8
+4 0 1 2 3
+3 0 1 4
+)";
+
+void expect_square_and_triangle(const SceneDescription& scene) {
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    const TriangleMesh& mesh = scene.meshes[0];
+    ASSERT_EQ(mesh.vertices.size(), 5u);
+    for (std::size_t v = 0; v < 5; ++v) EXPECT_EQ(mesh.vertices[v], glm::vec3(kVertices[v][0], kVertices[v][1], kVertices[v][2]));
+    EXPECT_EQ(mesh.triangles, (Triangles{{0, 1, 2}, {0, 2, 3}, {0, 1, 4}}));
+    ASSERT_EQ(mesh.normals.size(), 5u);
+    EXPECT_EQ(mesh.normals[0], glm::vec3(0, 0, 1));
+    EXPECT_NEAR(mesh.normals[4].y, -0.6f, 1e-7f);
+    EXPECT_NEAR(mesh.normals[4].z, 0.8f, 1e-7f);
+}
+
+TEST_F(PlyImport, Ascii) {
+    write("m.ply", kAsciiPly);
+    expect_square_and_triangle(load_file("m.ply"));
+}
+
+TEST_F(PlyImport, BinaryLittleEndian) {
+    write("m.ply", binary_ply(false, kVertices, kFaces, kNormals));
+    expect_square_and_triangle(load_file("m.ply"));
+}
+
+TEST_F(PlyImport, BinaryBigEndian) {
+    write("m.ply", binary_ply(true, kVertices, kFaces, kNormals));
+    expect_square_and_triangle(load_file("m.ply"));
+}
+
+TEST_F(PlyImport, CrLfLinesAndOtherElementsAndPropertiesAreRead) {
+    std::string text = R"(ply
+format ascii 1.0
+element vertex 3
+property double x
+property uchar red
+property double y
+property double z
+property list uchar float extra
+element material 1
+property float shine
+element face 1
+property uint flags
+property list uchar uint vertex_index
+end_header
+0 255 0 0 2 9 9
+1 0 0 0 0
+0 7 1 0 1 3.5
+0.25
+17 3 0 1 2
+)";
+    std::string crlf;
+    for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    write("m.ply", crlf);
+    const SceneDescription scene = load_file("m.ply");
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.meshes[0].vertices, (std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
+    EXPECT_EQ(scene.meshes[0].triangles, (Triangles{{0, 1, 2}}));
+    EXPECT_TRUE(scene.meshes[0].normals.empty());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad input
+
+std::string ascii_with(const std::string& from, const std::string& to) {
+    std::string text = kAsciiPly;
+    const std::size_t at = text.find(from);
+    if (at == std::string::npos) ADD_FAILURE() << "test bug: " << from;
+    return text.replace(at, from.size(), to);
+}
+
+TEST_F(PlyImport, MalformedNumberNamesTheLine) {
+    write("bad.ply", ascii_with("1 1 0 0 0 1", "1 abc 0 0 0 1"));
+    expect_mesh_error(error_for("bad.ply"), "bad.ply:16: not a number: \"abc\"", "");
+}
+
+TEST_F(PlyImport, TooFewAndTooManyValuesNameTheLine) {
+    write("few.ply", ascii_with("1 1 0 0 0 1", "1 1 0 0 0"));
+    expect_mesh_error(error_for("few.ply"), "few.ply:16: too few values", "");
+    write("many.ply", ascii_with("3 0 1 4", "3 0 1 4 7"));
+    expect_mesh_error(error_for("many.ply"), "many.ply:20: extra values at the end of the line", "");
+}
+
+TEST_F(PlyImport, AsciiFileEndingEarly) {
+    write("short.ply", ascii_with("3 0 1 4\n", ""));
+    expect_mesh_error(error_for("short.ply"), "short.ply:", "the file ends before face 1");
+}
+
+TEST_F(PlyImport, TruncatedBinaryNamesTheByteOffset) {
+    const std::string whole = binary_ply(false, kVertices, kFaces);
+    const std::size_t header = whole.find("end_header\n") + 11;
+    // Cut inside face 1: it starts after 5 vertices of 12 bytes and face 0 (1 + 4 * 4 bytes).
+    const std::size_t face1 = header + 5 * 12 + 17;
+    write("cut.ply", whole.substr(0, face1 + 6));
+    expect_mesh_error(error_for("cut.ply"), "cut.ply: byte " + std::to_string(face1) + " (face 1): the file ends inside this record", "");
+}
+
+TEST_F(PlyImport, EveryTruncatedFileIsAnError) {
+    for (const bool big_endian : {false, true}) {
+        const std::string whole = binary_ply(big_endian, kVertices, kFaces, kNormals);
+        for (std::size_t n = 0; n < whole.size(); ++n) {
+            write("cut.ply", whole.substr(0, n));
+            EXPECT_NE(error_for("cut.ply").find("cut.ply"), std::string::npos) << n << " bytes";
+        }
+    }
+    for (std::size_t n = 0; n + 1 < kAsciiPly.size(); ++n) {
+        if (kAsciiPly[n] == '\n') continue;  // cut at a line end: the last record may still be whole
+        write("cut.ply", kAsciiPly.substr(0, n));
+        try {
+            load_file("cut.ply");
+        } catch (const wt::SceneError&) {
+            continue;
+        }
+        // Only a cut inside the last number can leave a valid file (a shorter index).
+        EXPECT_GT(n, kAsciiPly.size() - 3) << n << " bytes loaded";
+    }
+}
+
+TEST_F(PlyImport, IndexOutOfRange) {
+    write("bad.ply", binary_ply(true, kVertices, {{0, 1, 5}}));
+    expect_mesh_error(error_for("bad.ply"), "bad.ply: byte", "(face 0): vertex index 5 out of range (the file has 5 vertices)");
+    write("neg.ply", ascii_with("3 0 1 4", "3 0 -1 4"));
+    expect_mesh_error(error_for("neg.ply"), "neg.ply:20: vertex index -1 out of range", "");
+}
+
+TEST_F(PlyImport, FaceWithTwoVertices) {
+    write("bad.ply", ascii_with("3 0 1 4", "2 0 1"));
+    expect_mesh_error(error_for("bad.ply"), "bad.ply:20: a face needs at least 3 vertices, got 2", "");
+}
+
+TEST_F(PlyImport, NanVertex) {
+    auto vertices = kVertices;
+    vertices[3][1] = std::numeric_limits<float>::quiet_NaN();
+    write("nan.ply", binary_ply(false, vertices, kFaces));
+    expect_mesh_error(error_for("nan.ply"), "nan.ply: byte", "(vertex 3): vertex position is not finite");
+    write("inf.ply", ascii_with("1 1 0 0 0 1", "1 inf 0 0 0 1"));
+    expect_mesh_error(error_for("inf.ply"), "inf.ply:16: vertex position is not finite", "");
+}
+
+TEST_F(PlyImport, NoFacesIsAnEmptyMesh) {
+    write("empty.ply", binary_ply(false, kVertices, {}));
+    expect_mesh_error(error_for("empty.ply"), "empty.ply", "no triangles (an empty mesh)");
+}
+
+TEST_F(PlyImport, BadHeaders) {
+    write("magic.ply", "plx\n");
+    expect_mesh_error(error_for("magic.ply"), "magic.ply:1: not a PLY file", "");
+    write("format.ply", ascii_with("format ascii 1.0", "format binary_middle_endian 1.0"));
+    expect_mesh_error(error_for("format.ply"), "format.ply:2: unknown format \"binary_middle_endian\"", "");
+    write("type.ply", ascii_with("property float y", "property real y"));
+    expect_mesh_error(error_for("type.ply"), "type.ply:6: unknown property type \"real\"", "");
+    write("noend.ply", "ply\nformat ascii 1.0\nelement vertex 0\n");
+    expect_mesh_error(error_for("noend.ply"), "noend.ply:3: the header ends before end_header", "");
+    write("noz.ply", ascii_with("property float z\n", ""));
+    expect_mesh_error(error_for("noz.ply"), "noz.ply: the vertex element lacks an x, y or z property", "");
+}
+
+}  // namespace
