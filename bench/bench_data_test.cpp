@@ -22,7 +22,9 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bench_data.h"
 #include "bench_scene.h"
+#include "core/scene_loader.h"
 #include "core/geometry_soa.h"
 #include "core/scene.h"
 #include "displaced_sphere.h"
@@ -168,12 +170,17 @@ protected:
     const TriangleMesh mesh_ = displaced_sphere(benchmark_sphere(20, 10), 0);
 };
 
-void expect_same_mesh(const TriangleMesh& expected, const TriangleMesh& read) {
+// Vertices and triangles bit for bit; normals bit for bit too unless normal_tolerance is given
+// (the importers renormalise normals, which may move them by an ulp).
+void expect_same_mesh(const TriangleMesh& expected, const TriangleMesh& read, float normal_tolerance = 0.0f) {
     ASSERT_EQ(read.vertices.size(), expected.vertices.size());
     ASSERT_EQ(read.normals.size(), expected.normals.size());
     for (std::size_t i = 0; i < expected.vertices.size(); ++i) {
         ASSERT_EQ(read.vertices[i], expected.vertices[i]) << "vertex " << i;
-        ASSERT_EQ(read.normals[i], expected.normals[i]) << "normal " << i;
+        if (normal_tolerance == 0.0f)
+            ASSERT_EQ(read.normals[i], expected.normals[i]) << "normal " << i;
+        else
+            ASSERT_LE(glm::length(read.normals[i] - expected.normals[i]), normal_tolerance) << "normal " << i;
     }
     EXPECT_EQ(read.triangles, expected.triangles);
 }
@@ -287,19 +294,58 @@ TEST_F(MeshFiles, AFailedWriteLeavesNoFile) {
     EXPECT_TRUE(fs::is_empty(directory_));
 }
 
-// --- The scenes ---
+// --- The scenes, through the scene loader's importers ---
 
-TEST(BenchScenes, SphereScenesAreTheHexroomPlusTheMesh) {
+constexpr const BenchmarkMesh& kMesh10k = kBenchmarkMeshes[0];
+
+// The hexroom plus the mesh, as the bench_data files must describe it: the same vertices and
+// triangles as displaced_sphere(), in the same order.
+void expect_hexroom_with_mesh10k(const SceneDescription& scene) {
     const SceneDescription hexroom = hexroom_description(8, 8, 1);
-    const BenchScene scene = bench_scene("hexroom_mesh10k", 8, 8);
-    ASSERT_EQ(scene.description.meshes.size(), hexroom.meshes.size() + 1);
-    ASSERT_EQ(scene.description.materials.size(), hexroom.materials.size() + 1);
-    EXPECT_EQ(scene.description.materials.back().name, "mesh10k");
-    EXPECT_EQ(scene.description.meshes.back().material, hexroom.materials.size());
-    EXPECT_EQ(scene.description.meshes.back().triangles.size(), 9'800u);
-    ASSERT_TRUE(scene.solid.has_value());
+    ASSERT_EQ(scene.meshes.size(), hexroom.meshes.size() + 1);
+    ASSERT_EQ(scene.materials.size(), hexroom.materials.size() + 1);
+    const Material& material = scene.materials.back();
+    EXPECT_EQ(material.name, "mesh10k");
+    EXPECT_EQ(material.albedo, added_mesh_material("mesh10k").albedo);
+    const TriangleMesh& mesh = scene.meshes.back();
+    EXPECT_EQ(mesh.material, hexroom.materials.size());
+    expect_same_mesh(displaced_sphere(benchmark_sphere(kMesh10k.segments_u, kMesh10k.segments_v), 0), mesh, 1e-6f);
+}
+
+TEST_F(MeshFiles, TheSceneFileLoadsToTheHexroomAndTheMeshBitForBit) {
+    write_bench_data(directory_.string(), kMesh10k);
+    expect_hexroom_with_mesh10k(hexroom_with_sphere_description(directory_.string(), kMesh10k, 8, 8, 1));
+}
+
+// The scene references the PLY; the OBJ and glb beside it must import to the same bits.
+TEST_F(MeshFiles, ObjAndGlbImportToTheSameMeshAsPly) {
+    write_bench_data(directory_.string(), kMesh10k);
+    const std::string ply_scene = read_file(bench_scene_file(directory_.string(), kMesh10k));
+    for (const std::string extension : {".obj", ".glb"}) {
+        std::string scene = ply_scene;
+        const std::size_t at = scene.find("mesh10k.ply");
+        ASSERT_NE(at, std::string::npos);
+        scene.replace(at, std::string("mesh10k.ply").size(), "mesh10k" + extension);
+        const fs::path path = directory_ / ("hexroom_mesh10k" + extension + ".json");
+        std::ofstream(path) << scene;
+        SCOPED_TRACE(extension);
+        expect_hexroom_with_mesh10k(load_scene_file(path.string()));
+    }
+}
+
+TEST_F(MeshFiles, AMissingSceneFileMakesTheSceneUnavailable) {
+    try {
+        hexroom_with_sphere_description(directory_.string(), kMesh10k, 8, 8, 1);
+        FAIL() << "no SceneUnavailable";
+    } catch (const SceneUnavailable& e) {
+        EXPECT_NE(std::string(e.what()).find("bench_data"), std::string::npos) << e.what();
+    }
+}
+
+TEST(BenchScenes, NamesAndBalls) {
     EXPECT_FALSE(bench_scene("hexroom", 8, 8).solid.has_value());
     EXPECT_THROW(bench_scene("no_such_scene", 8, 8), std::invalid_argument);
+    EXPECT_EQ(bench_scene_names().size(), 5u);
 }
 
 TEST(BenchScenes, FittingIntoTheBallPutsTheBoxCornersOnIt) {
@@ -319,7 +365,9 @@ TEST(BenchScenes, FittingIntoTheBallPutsTheBoxCornersOnIt) {
 }
 
 TEST(BenchScenes, IncoherentRaysNeverStartInsideTheMeshBall) {
-    const BenchScene description = bench_scene("hexroom_mesh10k", 8, 8);
+    SceneDescription with_sphere = hexroom_description(8, 8, 1);
+    with_sphere.meshes.push_back(displaced_sphere(benchmark_sphere(100, 50), 0));
+    const BenchScene description{"test", with_sphere, Ball{kBenchmarkSphereCentre, kBenchmarkSphereBoundingRadius}};
     const Scene scene = build_scene(description.description);
     const RaySet rays = incoherent_rays(scene, description.solid, 0, 20'000, 1);
     for (std::size_t i = 0; i < rays.size(); ++i)

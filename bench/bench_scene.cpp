@@ -7,6 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "bench_data.h"
 #include "core/scene_loader.h"
 
 namespace wt::bench {
@@ -49,7 +50,7 @@ SceneDescription hexroom_with_model_description(const Ball& ball, int width, int
     try {
         model = parse_scene_json(model_scene, std::string("bench_scene.cpp's scene for ") + kModelName);
     } catch (const SceneError& e) {
-        throw SceneUnavailable(std::string("the scene loader cannot read ") + kModelFile + " (mesh_file shapes come with the importers): " + e.what());
+        throw SceneUnavailable(std::string("the scene loader cannot load ") + kModelFile + ": " + e.what());
     }
     fit_into_ball(model.meshes, ball);
     SceneDescription scene = hexroom_description(width, height, spp);
@@ -83,10 +84,16 @@ Material added_mesh_material(const std::string& name) {
     return material;
 }
 
-SceneDescription hexroom_with_sphere_description(const BenchmarkMesh& mesh, int width, int height, int spp) {
-    SceneDescription scene = hexroom_description(width, height, spp);
-    append_meshes(scene, {added_mesh_material(mesh.name)}, {displaced_sphere(benchmark_sphere(mesh.segments_u, mesh.segments_v), 0)});
-    return scene;
+SceneDescription hexroom_with_sphere_description(const std::string& data_directory, const BenchmarkMesh& mesh, int width,
+                                                 int height, int spp) {
+    const std::string path = bench_scene_file(data_directory, mesh);
+    if (!std::filesystem::exists(path))
+        throw SceneUnavailable(path + " is missing: write it with `cmake --build build --target bench_data`");
+    try {
+        return with_resolution(load_scene_file(path), width, height, spp);
+    } catch (const SceneError& e) {
+        throw SceneUnavailable(e.what());
+    }
 }
 
 std::vector<std::string> bench_scene_names() {
@@ -101,7 +108,8 @@ BenchScene bench_scene(const std::string& name, int width, int height) {
     if (name == kHexroom) return {name, hexroom_description(width, height, kSpp), std::nullopt};
     const Ball ball{kBenchmarkSphereCentre, kBenchmarkSphereBoundingRadius};
     for (const BenchmarkMesh& mesh : kBenchmarkMeshes)
-        if (name == kScenePrefix + std::string(mesh.name)) return {name, hexroom_with_sphere_description(mesh, width, height, kSpp), ball};
+        if (name == kScenePrefix + std::string(mesh.name))
+            return {name, hexroom_with_sphere_description(WT_BENCH_DATA_DIR, mesh, width, height, kSpp), ball};
     if (name == kScenePrefix + std::string(kModelName)) return {name, hexroom_with_model_description(ball, width, height, kSpp), ball};
     throw std::invalid_argument("no benchmark scene named '" + name + "'");
 }

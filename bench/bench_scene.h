@@ -30,11 +30,13 @@ SceneDescription hexroom_description(int width, int height, int spp);
 // The grey Lambertian (albedo 0.8) a mesh added to the hexroom is made of, named `name`.
 Material added_mesh_material(const std::string& name);
 
-// The hexroom with benchmark mesh `mesh` (material added_mesh_material(mesh.name)) appended as
-// the last mesh. Built in code from displaced_sphere(); make_displaced_sphere writes the same
-// scene as bench-data/hexroom_<name>.json with the mesh in a .ply file, which replaces this
-// function's body (load_scene_file) once the loader reads mesh_file shapes on main.
-SceneDescription hexroom_with_sphere_description(const BenchmarkMesh& mesh, int width, int height, int spp);
+// The hexroom with benchmark mesh `mesh` in it, as make_displaced_sphere wrote it into
+// `data_directory` (bench_data.h): load_scene_file of bench_scene_file(data_directory, mesh),
+// which holds the mesh as a mesh_file shape (its last mesh, material added_mesh_material).
+// Throws SceneUnavailable if the file is missing (the bench_data target writes it) or does not
+// load.
+SceneDescription hexroom_with_sphere_description(const std::string& data_directory, const BenchmarkMesh& mesh, int width,
+                                                 int height, int spp);
 
 // Scales (uniformly) and moves `meshes` so their common bounding box is centred on the ball
 // and its corners lie on it. Normals need no change under a uniform scale and a translation.
@@ -56,8 +58,9 @@ struct SceneUnavailable : std::runtime_error {
 // Every scene above, in the order listed.
 std::vector<std::string> bench_scene_names();
 
-// The scene `name`, one sample per pixel at width x height. Throws SceneUnavailable, or
-// std::invalid_argument for a name not in bench_scene_names().
+// The scene `name`, one sample per pixel at width x height; the sphere scenes from
+// build/bench-data (WT_BENCH_DATA_DIR). Throws SceneUnavailable, or std::invalid_argument for a
+// name not in bench_scene_names().
 BenchScene bench_scene(const std::string& name, int width, int height);
 
 }  // namespace wt::bench
