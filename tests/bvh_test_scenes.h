@@ -225,8 +225,8 @@ inline Bounds walk(const BvhView& v, uint32_t ref, BvhDump& out) {
         out.max_leaf_size = std::max(out.max_leaf_size, count);
         out.leaves_one_kind &= kind <= uint32_t(BvhLeafKind::sphere);
         const bool sphere = kind == uint32_t(BvhLeafKind::sphere);
-        const uint32_t rows = sphere ? kSphereRows : v.planar_rows;
-        const float* block = (sphere ? v.spheres : v.planar) + std::size_t(first) * rows;
+        const uint32_t rows = sphere ? kSphereRows : v.leaf_rows;
+        const float* block = v.leaves + std::size_t(first) * v.leaf_rows;
         auto at = [&](uint32_t row, uint32_t lane) { return block[row * count + lane]; };
         auto vec = [&](uint32_t row, uint32_t lane) { return glm::vec3(at(row, lane), at(row + 1, lane), at(row + 2, lane)); };
         for (uint32_t l = 0; l < count; ++l) {
@@ -237,7 +237,7 @@ inline Bounds walk(const BvhView& v, uint32_t ref, BvhDump& out) {
             if (sphere) {
                 const float r = at(3, l);
                 b.add(vec(0, l) - r), b.add(vec(0, l) + r);
-            } else if (v.planar_rows == kWatertightRows) {
+            } else if (v.leaf_rows == kWatertightRows) {
                 b.add(vec(0, l)), b.add(vec(3, l)), b.add(vec(6, l));
             } else {
                 const glm::vec3 v0 = vec(0, l), e1 = vec(3, l), e2 = vec(6, l);

@@ -31,28 +31,40 @@ PrimRef make_ref(const Box& box, uint32_t id, BvhLeafKind kind) {
     return r;
 }
 
-std::vector<PrimRef> primitive_refs(const Scene& scene) {
+PrimRef triangle_ref(const TriangleSoA& t, std::size_t i) {
+    // The corners as the tests see them: v0 + u e1 + v e2 over the triangle or the unit
+    // square, and the vertices the watertight test reads.
+    Box box;
+    const glm::vec3 v0 = t.vertex0(i), e1 = t.edge1(i), e2 = t.edge2(i);
+    box.extend_point(v0), box.extend_point(t.vertex1(i)), box.extend_point(t.vertex2(i));
+    box.extend_point(v0 + e1), box.extend_point(v0 + e2);
+    const bool parallelogram = t.is_parallelogram(i);
+    if (parallelogram) box.extend_point(v0 + e1 + e2);
+    return make_ref(box, uint32_t(i), parallelogram ? BvhLeafKind::parallelogram : BvhLeafKind::triangle);
+}
+
+// In scene id order, in parallel over fixed chunks: count what each chunk keeps, then fill.
+std::vector<PrimRef> primitive_refs(const Scene& scene, ThreadPool& pool) {
     const TriangleSoA& t = scene.triangles;
     const SphereSoA& s = scene.spheres;
-    std::vector<PrimRef> refs;
-    refs.reserve(t.size() + s.size());
-    for (std::size_t i = 0; i < t.size(); ++i) {
-        if (never_hit(t, i)) continue;
-        // The corners as the tests see them: v0 + u e1 + v e2 over the triangle or the unit
-        // square, and the vertices the watertight test reads.
-        Box box;
-        const glm::vec3 v0 = t.vertex0(i), e1 = t.edge1(i), e2 = t.edge2(i);
-        box.extend_point(v0), box.extend_point(t.vertex1(i)), box.extend_point(t.vertex2(i));
-        box.extend_point(v0 + e1), box.extend_point(v0 + e2);
-        const bool parallelogram = t.is_parallelogram(i);
-        if (parallelogram) box.extend_point(v0 + e1 + e2);
-        refs.push_back(make_ref(box, uint32_t(i), parallelogram ? BvhLeafKind::parallelogram : BvhLeafKind::triangle));
-    }
+    constexpr std::size_t kChunk = 1 << 16;
+    const std::size_t chunks = (t.size() + kChunk - 1) / kChunk;
+    std::vector<std::size_t> kept(chunks + 1, 0);
+    pool.parallel_for(chunks, [&](std::size_t c, int) {
+        for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i) kept[c + 1] += !never_hit(t, i);
+    });
+    for (std::size_t c = 0; c < chunks; ++c) kept[c + 1] += kept[c];
+    std::vector<PrimRef> refs(kept[chunks] + s.size());
+    pool.parallel_for(chunks, [&](std::size_t c, int) {
+        std::size_t out = kept[c];
+        for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i)
+            if (!never_hit(t, i)) refs[out++] = triangle_ref(t, i);
+    });
     for (std::size_t i = 0; i < s.size(); ++i) {
         const glm::vec3 c = s.center(i), r(s.radius[i]);
         Box box;
         box.extend_point(c - r), box.extend_point(c + r);
-        refs.push_back(make_ref(box, uint32_t(t.size() + i), BvhLeafKind::sphere));
+        refs[kept[chunks] + i] = make_ref(box, uint32_t(t.size() + i), BvhLeafKind::sphere);
     }
     return refs;
 }
@@ -62,9 +74,8 @@ std::vector<PrimRef> primitive_refs(const Scene& scene) {
 template <int W>
 class WideCollapser {
 public:
-    WideCollapser(const Scene& scene, const BinaryTree& tree, const std::vector<PrimRef>& refs, float pad,
-                  AlignedVector<BvhNode<W>>& nodes, BvhPrimitives& primitives)
-        : scene_(scene), tree_(tree), refs_(refs), pad_(pad), nodes_(nodes), primitives_(primitives) {}
+    WideCollapser(const BinaryTree& tree, const std::vector<PrimRef>& refs, float pad, AlignedVector<BvhNode<W>>& nodes)
+        : tree_(tree), refs_(refs), pad_(pad), nodes_(nodes) {}
 
     uint32_t emit(uint32_t binary) {
         const BinaryNode& b = tree_.nodes[binary];
@@ -73,7 +84,6 @@ public:
 
     // Sums for the SAH cost of the result: node boxes' areas, leaf areas times their counts.
     double node_area_sum = 0.0, leaf_area_sum = 0.0;
-    std::size_t leaf_count = 0;
 
 private:
     uint32_t emit_inner(const BinaryNode& b) {
@@ -88,7 +98,7 @@ private:
             float widest_area = -1.0f;
             for (int c = 0; c < n; ++c) {
                 const BinaryNode& child = tree_.nodes[children[c]];
-                const float area = child.box.half_area();
+                const float area = child.box().half_area();
                 if (!child.is_leaf() && area > widest_area) widest = c, widest_area = area;
             }
             if (widest < 0) break;
@@ -98,14 +108,14 @@ private:
         }
         const uint32_t index = uint32_t(nodes_.size());
         nodes_.emplace_back();
-        node_area_sum += b.box.half_area();
+        node_area_sum += b.box().half_area();
         for (int c = 0; c < W; ++c) {
             for (int row = 0; row < 6; ++row) nodes_[index].bounds[row][c] = (row & 1) ? -kInf : kInf;
             nodes_[index].child[c] = kBvhEmptyChild;
         }
         for (int c = 0; c < n; ++c) {
             const uint32_t ref = emit(children[c]);  // may reallocate nodes_: index it afresh
-            const Box padded = tree_.nodes[children[c]].box.padded(pad_);
+            const Box padded = tree_.nodes[children[c]].box().padded(pad_);
             BvhNode<W>& node = nodes_[index];
             for (int a = 0; a < 3; ++a) {
                 node.bounds[2 * a][c] = padded.lo_at(a);
@@ -116,41 +126,58 @@ private:
         return index;
     }
 
+    // The leaf's primitives keep their place in `refs` (the partitions made each leaf a
+    // contiguous run there), so the blocks can be filled later, in parallel (fill_leaf_blocks).
     uint32_t emit_leaf(const BinaryNode& b) {
-        const BvhLeafKind kind = BvhLeafKind(refs_[b.first].kind);
-        const bool sphere = kind == BvhLeafKind::sphere;
-        const uint32_t first = sphere ? primitives_.sphere_count : primitives_.planar_count;
-        if (first + b.count > kBvhMaxLeafPrimitives)
+        if (b.first + b.count > kBvhMaxLeafPrimitives)
             throw std::invalid_argument("BVH: more than " + std::to_string(kBvhMaxLeafPrimitives) +
-                                        " primitives of one kind; the node format cannot index them");
-        uint32_t ids[kBvhMaxLeafSize];
-        for (uint32_t i = 0; i < b.count; ++i) ids[i] = refs_[b.first + i].id;
-        primitives_.append_leaf(scene_, ids, b.count, sphere);
-        ++leaf_count;
-        leaf_area_sum += double(b.box.half_area()) * b.count;
-        return kBvhLeafBit | (uint32_t(kind) << kBvhKindShift) | ((b.count - 1) << kBvhCountShift) | first;
+                                        " primitives; the node format cannot index them");
+        leaves.push_back(&b);
+        leaf_area_sum += double(b.box().half_area()) * b.count;
+        const uint32_t kind = refs_[b.first].kind;
+        return kBvhLeafBit | (kind << kBvhKindShift) | ((b.count - 1) << kBvhCountShift) | b.first;
     }
 
+public:
+    std::vector<const BinaryNode*> leaves;
+
+private:
     static constexpr float kInf = std::numeric_limits<float>::infinity();
-    const Scene& scene_;
     const BinaryTree& tree_;
     const std::vector<PrimRef>& refs_;
     const float pad_;
     AlignedVector<BvhNode<W>>& nodes_;
-    BvhPrimitives& primitives_;
 };
+
+// The leaves' primitive data, gathered from the scene's arrays (a random access per primitive,
+// the slow part of the copy), in parallel over fixed chunks of leaves.
+void fill_leaf_blocks(const Scene& scene, const std::vector<PrimRef>& refs, const std::vector<const BinaryNode*>& leaves,
+                      BvhPrimitives& primitives, ThreadPool& pool) {
+    primitives.resize(refs.size());
+    constexpr std::size_t kLeavesPerJob = 4096;
+    pool.parallel_for((leaves.size() + kLeavesPerJob - 1) / kLeavesPerJob, [&](std::size_t job, int) {
+        const std::size_t end = std::min(leaves.size(), (job + 1) * kLeavesPerJob);
+        for (std::size_t i = job * kLeavesPerJob; i < end; ++i) {
+            const BinaryNode& b = *leaves[i];
+            uint32_t ids[kBvhMaxLeafSize];
+            for (uint32_t l = 0; l < b.count; ++l) ids[l] = refs[b.first + l].id;
+            primitives.fill_leaf(scene, b.first, ids, b.count, refs[b.first].kind == uint32_t(BvhLeafKind::sphere));
+        }
+    });
+}
 
 template <int W>
 uint32_t collapse(const Scene& scene, const BinaryTree& tree, const std::vector<PrimRef>& refs, float pad,
-                  AlignedVector<BvhNode<W>>& nodes, BvhPrimitives& primitives, BvhStats& stats) {
-    nodes.reserve(refs.size() / 2 + 1);
-    WideCollapser<W> c(scene, tree, refs, pad, nodes, primitives);
+                  AlignedVector<BvhNode<W>>& nodes, BvhPrimitives& primitives, BvhStats& stats, ThreadPool& pool) {
+    nodes.reserve(refs.size() / 4 + 1);
+    WideCollapser<W> c(tree, refs, pad, nodes);
     const uint32_t root = c.emit(tree.root);
-    stats.leaf_count = c.leaf_count;
+    fill_leaf_blocks(scene, refs, c.leaves, primitives, pool);
+    stats.leaf_count = c.leaves.size();
     stats.node_count = nodes.size();
     // Expected node visits plus primitive tests of a ray that hits the scene's box (the SAH of
     // the wide tree with unit costs): what the build options trade against build time.
-    const double root_area = std::max(double(tree.nodes[tree.root].box.half_area()), 1e-30);
+    const double root_area = std::max(double(tree.nodes[tree.root].box().half_area()), 1e-30);
     stats.sah_cost = (c.node_area_sum + c.leaf_area_sum) / root_area;
     return root;
 }
@@ -173,8 +200,7 @@ Bvh build_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool* po
     Bvh bvh;
     bvh.node_width_ = options.node_width;
     bvh.primitives_.test = scene.settings.accuracy.triangles;
-    std::vector<PrimRef> refs = primitive_refs(scene);
-    bvh.primitives_.reserve(std::min(refs.size(), scene.triangles.size()), scene.spheres.size());
+    std::vector<PrimRef> refs = primitive_refs(scene, *pool);
     if (!refs.empty()) {
         SahSettings sah;
         sah.max_leaf_size = uint32_t(options.max_leaf_size);
@@ -184,9 +210,9 @@ Bvh build_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool* po
             throw std::invalid_argument("BVH: tree too deep for the traversal stack (" + std::to_string(tree.max_depth) +
                                         " levels)");
         bvh.stats_.max_depth = tree.max_depth;
-        const float pad = rounding_pad(tree.nodes[tree.root].box, scene.camera.eye());
-        bvh.root_ = options.node_width == 4 ? collapse<4>(scene, tree, refs, pad, bvh.nodes4_, bvh.primitives_, bvh.stats_)
-                                            : collapse<8>(scene, tree, refs, pad, bvh.nodes8_, bvh.primitives_, bvh.stats_);
+        const float pad = rounding_pad(tree.nodes[tree.root].box(), scene.camera.eye());
+        bvh.root_ = options.node_width == 4 ? collapse<4>(scene, tree, refs, pad, bvh.nodes4_, bvh.primitives_, bvh.stats_, *pool)
+                                            : collapse<8>(scene, tree, refs, pad, bvh.nodes8_, bvh.primitives_, bvh.stats_, *pool);
     }
     bvh.stats_.primitive_count = refs.size();
     bvh.stats_.node_bytes = bvh.nodes4_.size() * sizeof(BvhNode<4>) + bvh.nodes8_.size() * sizeof(BvhNode<8>);
@@ -201,9 +227,8 @@ BvhView bvh_view(const Bvh& bvh) {
     v.nodes = bvh.node_width_ == 4 ? static_cast<const void*>(bvh.nodes4_.data()) : static_cast<const void*>(bvh.nodes8_.data());
     v.root = bvh.root_;
     v.max_depth = bvh.stats_.max_depth;
-    v.planar = bvh.primitives_.planar.data();
-    v.planar_rows = bvh.primitives_.planar_rows();
-    v.spheres = bvh.primitives_.spheres.data();
+    v.leaves = bvh.primitives_.blocks.data();
+    v.leaf_rows = bvh.primitives_.rows();
     return v;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
-// The scene's primitives copied into BVH leaf order, leaf by leaf in the block layout of
-// bvh_view.h, holding only what the scene's primitive tests read (v0, the edges and the scaled
-// normal for Moller-Trumbore; the three vertices for the watertight test; centre and radius for
-// spheres) and each one's scene id, so a leaf test returns the flat kernels' bits.
+// The scene's primitives copied into BVH leaf blocks (bvh_view.h), holding only what the
+// scene's primitive tests read (v0, the edges and the scaled normal for Moller-Trumbore; the
+// three vertices for the watertight test; centre and radius for spheres) and each one's scene
+// id, so a leaf test returns the flat kernels' bits.
 
 #include <cstddef>
 #include <cstdint>
@@ -16,15 +16,14 @@ namespace wt {
 
 struct BvhPrimitives {
     TriangleTest test = TriangleTest::moller_trumbore;
-    AlignedVector<float> planar, spheres;
-    uint32_t planar_count = 0, sphere_count = 0;
+    AlignedVector<float> blocks;
 
-    uint32_t planar_rows() const { return test == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows; }
-    // Room for `planar` planar primitives and `spheres` spheres.
-    void reserve(std::size_t planar_prims, std::size_t sphere_prims);
-    // Appends one leaf: scene primitives ids[0 .. count), all planar or all spheres.
-    void append_leaf(const Scene& scene, const uint32_t* ids, uint32_t count, bool sphere);
-    std::size_t bytes() const { return (planar.size() + spheres.size()) * sizeof(float); }
+    uint32_t rows() const { return test == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows; }
+    void resize(std::size_t primitives) { blocks.resize(primitives * rows()); }
+    // Writes the block of the leaf whose primitives, scene ids ids[0 .. count), start at index
+    // `first`; all of one kind.
+    void fill_leaf(const Scene& scene, uint32_t first, const uint32_t* ids, uint32_t count, bool spheres);
+    std::size_t bytes() const { return blocks.size() * sizeof(float); }
 };
 
 }  // namespace wt

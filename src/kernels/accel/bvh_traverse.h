@@ -74,7 +74,8 @@ WT_KERNEL_INLINE void test_leaf(const BvhView& bvh, uint32_t ref, const SingleRa
     const uint32_t first = ref & kBvhFirstMask;
     const uint32_t count = ((ref >> kBvhCountShift) & 7u) + 1u;
     constexpr uint32_t rows = T == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
-    const TriangleBlock<T> triangles{bvh.planar + std::size_t(first) * rows, count};
+    const float* block = bvh.leaves + std::size_t(first) * rows;
+    const TriangleBlock<T> triangles{block, count};
     switch (BvhLeafKind((ref >> kBvhKindShift) & 3u)) {
         case BvhLeafKind::parallelogram:
             // Only Moller-Trumbore scenes have parallelograms (build_scene splits quads otherwise).
@@ -85,7 +86,7 @@ WT_KERNEL_INLINE void test_leaf(const BvhView& bvh, uint32_t ref, const SingleRa
             test_planar_run<Planar::triangle>(tri_ray, triangles, count, state);
             break;
         case BvhLeafKind::sphere:
-            test_sphere_run<S>(ray, SphereBlock{bvh.spheres + std::size_t(first) * kSphereRows, count}, count, state);
+            test_sphere_run<S>(ray, SphereBlock{block, count}, count, state);
             break;
         default:  // kBvhEmptyChild: the root of a scene with nothing to hit
             break;

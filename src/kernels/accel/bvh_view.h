@@ -38,22 +38,22 @@ constexpr uint32_t kBvhMaxLeafPrimitives = kBvhFirstMask + 1;  // per kind
 constexpr int kBvhStackSize = 1024;
 
 // Leaf primitives are stored leaf by leaf, each leaf as one block: its k primitives row by row,
-// k floats per row, the last row their scene ids (as uint32 bits). A leaf test reads one small
-// contiguous block (two cache lines for two triangles) with the same SoA loads the flat kernels
-// use on their arrays, instead of one cache line from each of 12 arrays.
-// A leaf whose first primitive is the i-th of its kind in leaf order starts at float i * rows.
+// k floats per row, the last row of the block their scene ids (as uint32 bits). A leaf test
+// reads one small contiguous block (two cache lines for two triangles) with the same SoA loads
+// the flat kernels use on their arrays, instead of one cache line from each of 12 arrays.
+// Every primitive has `leaf_rows` floats; a leaf whose first primitive has index i starts at
+// float i * leaf_rows. A sphere leaf's block uses only its first kSphereRows rows.
 constexpr uint32_t kMollerTrumboreRows = 13;  // v0 xyz, e1 xyz, e2 xyz, scaled normal xyz, id
 constexpr uint32_t kWatertightRows = 10;      // v0 xyz, v1 xyz, v2 xyz, id
 constexpr uint32_t kSphereRows = 5;           // centre xyz, radius, id
 
 struct BvhView {
-    const void* nodes;     // BvhNode<node_width>[]
-    uint32_t node_width;   // 4 or 8
-    uint32_t root;         // child reference of the root (a leaf for a scene that fits in one)
-    uint32_t max_depth;    // deepest leaf, in nodes: bounds the traversal stack
-    const float* planar;   // parallelogram and triangle leaf blocks (the leaf's kind says which)
-    uint32_t planar_rows;  // kMollerTrumboreRows or kWatertightRows, as the scene's triangle test
-    const float* spheres;  // sphere leaf blocks, kSphereRows rows
+    const void* nodes;    // BvhNode<node_width>[]
+    uint32_t node_width;  // 4 or 8
+    uint32_t root;        // child reference of the root (a leaf for a scene that fits in one)
+    uint32_t max_depth;   // deepest leaf, in nodes: bounds the traversal stack
+    const float* leaves;  // leaf blocks
+    uint32_t leaf_rows;   // kMollerTrumboreRows or kWatertightRows, as the scene's triangle test
 };
 
 }  // namespace wt

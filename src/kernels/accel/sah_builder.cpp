@@ -175,7 +175,7 @@ private:
     // one of the pool's own jobs).
     bool split_or_leaf(uint32_t node, const Range& range, uint32_t depth, bool on_pool, Range& left, Range& right) {
         BinaryNode& n = nodes_[node];
-        n.box = range.box;
+        n.lo = range.box.lo, n.hi = range.box.hi;
         const uint32_t count = range.count;
         const bool may_be_leaf = count <= settings_.max_leaf_size && range.one_kind();
         if (count == 1 || (may_be_leaf && count == 2)) return make_leaf(n, range, depth);

@@ -29,11 +29,14 @@ struct alignas(16) PrimRef {
     __m128 centroid_times_two() const { return _mm_add_ps(_mm_load_ps(lo), _mm_load_ps(hi)); }
 };
 
+// Plain registers rather than a Box, so an array of them is not initialised when allocated:
+// the builder allocates room for 2n - 1 nodes and touches only those it makes.
 struct BinaryNode {
-    Box box;
+    __m128 lo, hi;          // the box
     uint32_t first, count;  // a leaf: refs [first, first + count); count == 0 for an inner node
     uint32_t left, right;   // an inner node's children
     bool is_leaf() const { return count > 0; }
+    Box box() const { return Box::of(lo, hi); }
 };
 
 // Costs in units of one primitive test. A node's cost is that of testing the ray against the
