@@ -7,7 +7,7 @@ JOBS ?= $(shell nproc)
 SCENE ?= scenes/hexroom.json
 RENDER_DIR ?= renders
 
-.PHONY: render test test-long bench perf-gate perf-gate-update build deps configure clean
+.PHONY: render test test-long bench bench-deps perf-gate perf-gate-update build deps configure clean
 
 render: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
@@ -20,9 +20,16 @@ test: build
 test-long: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -L long
 
-bench: build
+# The benchmarks also install their own optional packages (Embree, the real model) and write
+# the benchmark mesh files (build/bench-data) first.
+bench: bench-deps
+	$(MAKE) build
+	cmake --build $(BUILD_DIR) --target bench_data
 	$(BUILD_DIR)/bin/bench_intersect
 	$(BUILD_DIR)/bin/bench_render
+
+bench-deps: deps
+	bench/install-bench-deps.sh
 
 perf-gate: build
 	bench/perf_gate.sh $(BUILD_DIR)

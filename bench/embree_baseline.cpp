@@ -96,6 +96,47 @@ void load_packet(const RayView& rays, uint32_t first, int lanes, PacketRay& pack
     }
 }
 
+RTCDevice new_device(int threads) {
+    const std::string config = "threads=" + std::to_string(threads);
+    RTCDevice device = rtcNewDevice(config.c_str());
+    if (!device) throw std::runtime_error("Embree: rtcNewDevice(\"" + config + "\") failed");
+    return device;
+}
+
+// Each planar entry of ours as Embree's own primitive for it: parallelograms as quads v0,
+// v0 + e1, v0 + e1 + e2, v0 + e2 (exact for the hexroom's integer corners), triangles as v0,
+// v0 + e1, v0 + e2, rebuilt from the SoA buffers our kernels read; spheres as sphere points.
+// rtcNewScene, the geometries and rtcCommitScene: what the build benchmark times.
+RTCScene new_committed_scene(RTCDevice device, const Scene& our_scene) {
+    RTCScene scene = rtcNewScene(device);
+    const TriangleSoA& t = our_scene.triangles;
+    if (t.parallelogram_count > 0) {
+        attach_planar<4>(device, scene, kQuadGeometry, t.parallelogram_count, [&](std::size_t i, glm::vec3* c) {
+            c[0] = t.vertex0(i), c[1] = c[0] + t.edge1(i), c[2] = c[1] + t.edge2(i), c[3] = c[0] + t.edge2(i);
+        });
+    }
+    attach_planar<3>(device, scene, kTriangleGeometry, t.size() - t.parallelogram_count, [&](std::size_t k, glm::vec3* c) {
+        const std::size_t i = t.parallelogram_count + k;
+        c[0] = t.vertex0(i), c[1] = c[0] + t.edge1(i), c[2] = c[0] + t.edge2(i);
+    });
+
+    const SphereSoA& s = our_scene.spheres;
+    if (s.size() > 0) {
+        RTCGeometry spheres = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+        auto* points = static_cast<float*>(
+            rtcSetNewGeometryBuffer(spheres, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), s.size()));
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            points[4 * i + 0] = s.cx[i], points[4 * i + 1] = s.cy[i], points[4 * i + 2] = s.cz[i], points[4 * i + 3] = s.radius[i];
+        }
+        rtcCommitGeometry(spheres);
+        rtcAttachGeometryByID(scene, spheres, kSphereGeometry);
+        rtcReleaseGeometry(spheres);
+    }
+    rtcCommitScene(scene);
+    throw_on_device_error(device, "building the scene");
+    return scene;
+}
+
 }  // namespace
 
 struct EmbreeBaseline::Impl {
@@ -147,42 +188,11 @@ struct EmbreeBaseline::Impl {
 };
 
 EmbreeBaseline::EmbreeBaseline(const Scene& scene) : impl_(std::make_unique<Impl>()) {
-    // One build thread: the benchmarks are single-threaded, and the scene has tens of primitives.
-    impl_->device = rtcNewDevice("threads=1");
-    if (!impl_->device) throw std::runtime_error("Embree: rtcNewDevice failed");
-    impl_->scene = rtcNewScene(impl_->device);
+    // One build thread: the benchmarks trace on one thread, and building is not what they time.
+    impl_->device = new_device(1);
+    impl_->scene = new_committed_scene(impl_->device, scene);
     impl_->triangle_count = uint32_t(scene.triangles.size());
-
-    // Each planar entry as Embree's own primitive for it: parallelograms as quads v0, v0 + e1,
-    // v0 + e1 + e2, v0 + e2 (exact for the hexroom's integer corners), triangles as
-    // v0, v0 + e1, v0 + e2, rebuilt from the SoA buffers our kernels read.
-    const TriangleSoA& t = scene.triangles;
-    impl_->parallelogram_count = t.parallelogram_count;
-    if (t.parallelogram_count > 0) {
-        attach_planar<4>(impl_->device, impl_->scene, kQuadGeometry, t.parallelogram_count, [&](std::size_t i, glm::vec3* c) {
-            c[0] = t.vertex0(i), c[1] = c[0] + t.edge1(i), c[2] = c[1] + t.edge2(i), c[3] = c[0] + t.edge2(i);
-        });
-    }
-    attach_planar<3>(impl_->device, impl_->scene, kTriangleGeometry, t.size() - t.parallelogram_count,
-                     [&](std::size_t k, glm::vec3* c) {
-                         const std::size_t i = t.parallelogram_count + k;
-                         c[0] = t.vertex0(i), c[1] = c[0] + t.edge1(i), c[2] = c[0] + t.edge2(i);
-                     });
-
-    const SphereSoA& s = scene.spheres;
-    if (s.size() > 0) {
-        RTCGeometry spheres = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-        auto* points = static_cast<float*>(
-            rtcSetNewGeometryBuffer(spheres, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), s.size()));
-        for (std::size_t i = 0; i < s.size(); ++i) {
-            points[4 * i + 0] = s.cx[i], points[4 * i + 1] = s.cy[i], points[4 * i + 2] = s.cz[i], points[4 * i + 3] = s.radius[i];
-        }
-        rtcCommitGeometry(spheres);
-        rtcAttachGeometryByID(impl_->scene, spheres, kSphereGeometry);
-        rtcReleaseGeometry(spheres);
-    }
-    rtcCommitScene(impl_->scene);
-    throw_on_device_error(impl_->device, "building the scene");
+    impl_->parallelogram_count = scene.triangles.parallelogram_count;
 }
 
 EmbreeBaseline::~EmbreeBaseline() {
@@ -231,6 +241,29 @@ void EmbreeBaseline::any(EmbreeApi api, const RayView& rays, uint8_t* occluded, 
         rtcOccluded1(impl_->scene, &context, &r);
         occluded[i] = r.tfar < 0.0f;
     }
+}
+
+
+struct EmbreeSceneBuilder::Impl {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+};
+
+EmbreeSceneBuilder::EmbreeSceneBuilder(int threads) : impl_(std::make_unique<Impl>()) { impl_->device = new_device(threads); }
+
+EmbreeSceneBuilder::~EmbreeSceneBuilder() {
+    release();
+    rtcReleaseDevice(impl_->device);
+}
+
+void EmbreeSceneBuilder::build(const Scene& scene) {
+    release();
+    impl_->scene = new_committed_scene(impl_->device, scene);
+}
+
+void EmbreeSceneBuilder::release() {
+    if (impl_->scene) rtcReleaseScene(impl_->scene);
+    impl_->scene = nullptr;
 }
 
 }  // namespace wt::bench

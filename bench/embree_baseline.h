@@ -23,7 +23,7 @@ class EmbreeBaseline {
 public:
     // Triangles become one RTC_GEOMETRY_TYPE_TRIANGLE geometry (vertices v0, v0 + e1, v0 + e2
     // from the scene's SoA, so Embree sees the triangles our kernels see), spheres one
-    // RTC_GEOMETRY_TYPE_SPHERE_POINT geometry. The device runs on one thread.
+    // RTC_GEOMETRY_TYPE_SPHERE_POINT geometry. The device builds on one thread.
     explicit EmbreeBaseline(const Scene& scene);
     ~EmbreeBaseline();
     EmbreeBaseline(const EmbreeBaseline&) = delete;
@@ -35,6 +35,26 @@ public:
     // which it may use to pick its packet traversal.
     void closest(EmbreeApi api, const RayView& rays, const HitView& hits, bool coherent) const;
     void any(EmbreeApi api, const RayView& rays, uint8_t* occluded, bool coherent) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Embree's BVH build, for timing beside ours: an Embree device with `threads` build threads
+// ("threads=N"), on which build() makes the scene as EmbreeBaseline does: rtcNewScene, the
+// geometries (our primitives copied into Embree's buffers) and rtcCommitScene. release()
+// frees the last one built (build() and the destructor call it too), so a benchmark can keep
+// the freeing out of its timing.
+class EmbreeSceneBuilder {
+public:
+    explicit EmbreeSceneBuilder(int threads);
+    ~EmbreeSceneBuilder();
+    EmbreeSceneBuilder(const EmbreeSceneBuilder&) = delete;
+    EmbreeSceneBuilder& operator=(const EmbreeSceneBuilder&) = delete;
+
+    void build(const Scene& scene);
+    void release();
 
 private:
     struct Impl;

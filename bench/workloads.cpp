@@ -4,17 +4,14 @@
 
 #include <glm/geometric.hpp>
 
-#include "bench_scene.h"
 #include "core/path_vertex.h"
 #include "core/rng.h"
 #include "core/sampling.h"
-#include "kernels/intersect_dispatch.h"
 
 namespace wt::bench {
 
 namespace {
 
-constexpr int kImageSize = 800;
 constexpr uint32_t kIncoherentRayCount = 1'000'000;
 constexpr uint32_t kShadowRayCount = 1'000'000;
 constexpr uint64_t kIncoherentSeed = 1;
@@ -38,15 +35,17 @@ bool inside_room(const glm::vec3& p) {
     return true;
 }
 
+bool inside_ball(const glm::vec3& centre, float radius, const glm::vec3& p) {
+    const glm::vec3 offset = p - centre;
+    return glm::dot(offset, offset) < radius * radius;
+}
+
 // Rays starting inside a glass sphere would measure a case the renderer meets only after a
-// refraction; inside an opaque one, never.
-bool inside_a_sphere(const Scene& scene, const glm::vec3& p) {
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-        const glm::vec3 offset = p - scene.spheres.center(i);
-        const float r = scene.spheres.radius[i];
-        if (glm::dot(offset, offset) < r * r) return true;
-    }
-    return false;
+// refraction; inside an opaque one or a closed mesh, never.
+bool inside_a_solid(const Scene& scene, const std::optional<Ball>& solid, const glm::vec3& p) {
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        if (inside_ball(scene.spheres.center(i), scene.spheres.radius[i], p)) return true;
+    return solid && inside_ball(solid->centre, solid->radius, p);
 }
 
 // The random numbers of incoherent ray i: the origin's three at "bounce" = attempt (rejection
@@ -61,14 +60,14 @@ glm::vec3 uniform_sphere_direction(float u0, float u1) {
     return glm::normalize(glm::vec3(r * std::cos(phi), r * std::sin(phi), z));
 }
 
-Ray incoherent_ray(const Scene& scene, uint32_t index, uint64_t seed) {
+Ray incoherent_ray(const Scene& scene, const std::optional<Ball>& solid, uint32_t index, uint64_t seed) {
     const uint64_t key = path_key(seed, index, 0);
     glm::vec3 origin;
     for (uint32_t attempt = 0;; ++attempt) {
         origin = {kRoomMinX + (kRoomMaxX - kRoomMinX) * random_float(key, attempt, kOriginDimension),
                   kRoomMinY + (kRoomMaxY - kRoomMinY) * random_float(key, attempt, kOriginDimension + 1),
                   kRoomMinZ + (kRoomMaxZ - kRoomMinZ) * random_float(key, attempt, kOriginDimension + 2)};
-        if (inside_room(origin) && !inside_a_sphere(scene, origin)) break;
+        if (inside_room(origin) && !inside_a_solid(scene, solid, origin)) break;
     }
     const glm::vec3 direction = uniform_sphere_direction(random_float(key, 0, kDirectionDimension),
                                                          random_float(key, 0, kDirectionDimension + 1));
@@ -120,25 +119,23 @@ RaySet primary_rays(const Scene& scene) {
     return rays;
 }
 
-RaySet incoherent_rays(const Scene& scene, uint32_t first_index, uint32_t count, uint64_t seed) {
+RaySet incoherent_rays(const Scene& scene, const std::optional<Ball>& solid, uint32_t first_index, uint32_t count,
+                       uint64_t seed) {
     RaySet rays;
-    for (uint32_t i = first_index; i < first_index + count; ++i) rays.push_back(incoherent_ray(scene, i, seed));
+    for (uint32_t i = first_index; i < first_index + count; ++i) rays.push_back(incoherent_ray(scene, solid, i, seed));
     return rays;
 }
 
-RaySet shadow_rays(const Scene& scene, uint32_t count, uint64_t incoherent_seed, uint64_t light_seed) {
-    // The scalar kernels find the shading points: they give the same bits as every other ISA,
-    // so the workload does not depend on the machine that builds it.
-    const IntersectKernels& scalar = intersect_kernels(Isa::scalar);
-    const SceneView scene_soa = scene_view(scene);
+RaySet shadow_rays(const Scene& scene, const std::optional<Ball>& solid, const ClosestHitFunction& closest, uint32_t count,
+                   uint64_t incoherent_seed, uint64_t light_seed) {
     const glm::vec3 unit_throughput(1.0f);  // the samples' contribution is not used here
     RaySet rays;
     // About 7 in 10 incoherent rays yield a shadow ray; the stream is read in chunks until enough have.
     constexpr uint32_t kChunk = 1u << 18;
     for (uint32_t first = 0; rays.size() < count; first += kChunk) {
-        const RaySet probes = incoherent_rays(scene, first, kChunk, incoherent_seed);
+        const RaySet probes = incoherent_rays(scene, solid, first, kChunk, incoherent_seed);
         ClosestHits hits(probes.size());
-        scalar.closest_raypacket(scene_soa, probes.view(), {hits.t.data(), hits.u.data(), hits.v.data(), hits.prim.data()});
+        closest(probes.view(), {hits.t.data(), hits.u.data(), hits.v.data(), hits.prim.data()});
         for (uint32_t i = 0; i < probes.size() && rays.size() < count; ++i) {
             const Hit hit = hits.at(i);
             if (!hit.found()) continue;
@@ -154,25 +151,13 @@ RaySet shadow_rays(const Scene& scene, uint32_t count, uint64_t incoherent_seed,
     return rays;
 }
 
-const Scene& benchmark_scene() {
-    static const Scene scene = build_scene(hexroom_description(kImageSize, kImageSize, 1));
-    return scene;
-}
-
-const RaySet& workload_rays(Workload workload) {
+RaySet workload_rays(Workload workload, const Scene& scene, const std::optional<Ball>& solid, const ClosestHitFunction& closest) {
     switch (workload) {
-        case Workload::primary: {
-            static const RaySet rays = primary_rays(benchmark_scene());
-            return rays;
-        }
-        case Workload::incoherent: {
-            static const RaySet rays = incoherent_rays(benchmark_scene(), 0, kIncoherentRayCount, kIncoherentSeed);
-            return rays;
-        }
+        case Workload::primary: return primary_rays(scene);
+        case Workload::incoherent: return incoherent_rays(scene, solid, 0, kIncoherentRayCount, kIncoherentSeed);
         case Workload::shadow: break;
     }
-    static const RaySet rays = shadow_rays(benchmark_scene(), kShadowRayCount, kIncoherentSeed, kLightSeed);
-    return rays;
+    return shadow_rays(scene, solid, closest, kShadowRayCount, kIncoherentSeed, kLightSeed);
 }
 
 }  // namespace wt::bench

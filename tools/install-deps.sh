@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages wavetrace needs to build and test, skipping any already there.
-# Safe to run again; does nothing when everything is installed.
+# Installs the Debian 12 packages wavetrace needs to build and test, and any named as arguments,
+# skipping any already there. Safe to run again; does nothing when everything is installed.
 set -euo pipefail
 
 packages=(
@@ -17,6 +17,8 @@ packages=(
   libbenchmark-dev              # benchmarks
   valgrind                      # callgrind, for the instruction-count performance gate
 )
+# Extra packages named on the command line (bench/install-bench-deps.sh: the benchmarks' own).
+packages+=("$@")
 
 missing=()
 for p in "${packages[@]}"; do
