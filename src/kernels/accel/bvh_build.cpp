@@ -149,10 +149,10 @@ private:
     AlignedVector<BvhNode<W>>& nodes_;
 };
 
-// The leaves' primitive data, gathered from the scene's arrays (a random access per primitive,
-// the slow part of the copy), in parallel over fixed chunks of leaves.
+// The leaves' primitive data, in parallel over fixed chunks of leaves.
 void fill_leaf_blocks(const Scene& scene, const std::vector<PrimRef>& refs, const std::vector<const BinaryNode*>& leaves,
                       BvhPrimitives& primitives, ThreadPool& pool) {
+    const AlignedVector<float> records = primitives.records(scene, pool);
     primitives.resize(refs.size());
     constexpr std::size_t kLeavesPerJob = 4096;
     pool.parallel_for((leaves.size() + kLeavesPerJob - 1) / kLeavesPerJob, [&](std::size_t job, int) {
@@ -161,7 +161,7 @@ void fill_leaf_blocks(const Scene& scene, const std::vector<PrimRef>& refs, cons
             const BinaryNode& b = *leaves[i];
             uint32_t ids[kBvhMaxLeafSize];
             for (uint32_t l = 0; l < b.count; ++l) ids[l] = refs[b.first + l].id;
-            primitives.fill_leaf(scene, b.first, ids, b.count, refs[b.first].kind == uint32_t(BvhLeafKind::sphere));
+            primitives.fill_leaf(records.data(), b.first, ids, b.count, refs[b.first].kind == uint32_t(BvhLeafKind::sphere));
         }
     });
 }

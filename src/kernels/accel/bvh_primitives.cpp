@@ -1,6 +1,9 @@
 #include "kernels/accel/bvh_primitives.h"
 
+#include <algorithm>
 #include <cstring>
+
+#include "core/thread_pool.h"
 
 namespace wt {
 namespace {
@@ -11,29 +14,41 @@ float id_bits(uint32_t id) {
 }
 }  // namespace
 
-void BvhPrimitives::fill_leaf(const Scene& scene, uint32_t first, const uint32_t* ids, uint32_t count, bool spheres) {
-    float* block = blocks.data() + std::size_t(first) * rows();
-    auto put = [&](uint32_t row, uint32_t lane, float value) { block[row * count + lane] = value; };
+AlignedVector<float> BvhPrimitives::records(const Scene& scene, ThreadPool& pool) const {
     const TriangleSoA& t = scene.triangles;
     const SphereSoA& s = scene.spheres;
+    const std::size_t stride = rows() - 1;
+    AlignedVector<float> out((t.size() + s.size()) * stride);
+    constexpr std::size_t kChunk = 1 << 16;
+    pool.parallel_for((t.size() + kChunk - 1) / kChunk, [&](std::size_t c, int) {
+        for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i) {
+            float* r = out.data() + i * stride;
+            if (test == TriangleTest::watertight) {
+                const float row[] = {t.v0x[i], t.v0y[i], t.v0z[i], t.v1x[i], t.v1y[i], t.v1z[i], t.v2x[i], t.v2y[i], t.v2z[i]};
+                std::memcpy(r, row, sizeof row);
+            } else {
+                const float row[] = {t.v0x[i], t.v0y[i], t.v0z[i], t.e1x[i], t.e1y[i], t.e1z[i],
+                                     t.e2x[i], t.e2y[i], t.e2z[i], t.scaled_nx[i], t.scaled_ny[i], t.scaled_nz[i]};
+                std::memcpy(r, row, sizeof row);
+            }
+        }
+    });
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const float row[] = {s.cx[i], s.cy[i], s.cz[i], s.radius[i]};
+        std::memcpy(out.data() + (t.size() + i) * stride, row, sizeof row);
+    }
+    return out;
+}
+
+void BvhPrimitives::fill_leaf(const float* records, uint32_t first, const uint32_t* ids, uint32_t count, bool spheres) {
+    const uint32_t stride = rows() - 1;
+    const uint32_t data_rows = spheres ? kSphereRows - 1 : stride;
+    const uint32_t id_row = spheres ? kSphereRows - 1 : stride;
+    float* block = blocks.data() + std::size_t(first) * rows();
     for (uint32_t l = 0; l < count; ++l) {
-        const uint32_t id = ids[l];
-        if (spheres) {
-            const std::size_t i = id - t.size();
-            const float row[] = {s.cx[i], s.cy[i], s.cz[i], s.radius[i]};
-            for (uint32_t r = 0; r < 4; ++r) put(r, l, row[r]);
-            put(kSphereRows - 1, l, id_bits(id));
-            continue;
-        }
-        if (test == TriangleTest::watertight) {
-            const float row[] = {t.v0x[id], t.v0y[id], t.v0z[id], t.v1x[id], t.v1y[id], t.v1z[id], t.v2x[id], t.v2y[id], t.v2z[id]};
-            for (uint32_t r = 0; r < 9; ++r) put(r, l, row[r]);
-        } else {
-            const float row[] = {t.v0x[id], t.v0y[id], t.v0z[id], t.e1x[id], t.e1y[id], t.e1z[id],
-                                 t.e2x[id], t.e2y[id], t.e2z[id], t.scaled_nx[id], t.scaled_ny[id], t.scaled_nz[id]};
-            for (uint32_t r = 0; r < 12; ++r) put(r, l, row[r]);
-        }
-        put(rows() - 1, l, id_bits(id));
+        const float* r = records + std::size_t(ids[l]) * stride;
+        for (uint32_t row = 0; row < data_rows; ++row) block[row * count + l] = r[row];
+        block[id_row * count + l] = id_bits(ids[l]);
     }
 }
 

@@ -4,11 +4,11 @@
 // enters are visited nearest first (closest hit) and a leaf is one SoA primitive test
 // (single_ray.h), so a leaf returns exactly what the flat kernels return for its primitives.
 //
-// Nothing the flat kernels hit is lost: boxes are padded by a bound on the primitive tests'
-// rounding (bvh_boxes.h), and the far slab distance is scaled by 1 + 2 gamma(3) (Ize, "Robust
-// BVH Ray Traversal", JCGT 2013), which makes the float box test accept every ray the exact one
-// does. Subtracting the origin before multiplying by 1/d (not the FMA form bound * (1/d) - o/d)
-// is what that bound assumes.
+// Nothing the flat kernels hit is lost: the far slab distance is scaled by 1 + 2 gamma(3) (Ize,
+// "Robust BVH Ray Traversal", JCGT 2013) against the rounding of the slab arithmetic, and boxes
+// are padded by 64 float steps of the scene's coordinates (bvh_boxes.h), more than both the
+// primitive tests' rounding and that of the slab distances in their FMA form bound/d - o/d,
+// whose o/d is rounded once per ray (a step of |o| along the ray at most).
 
 #include <cstdint>
 
@@ -30,15 +30,16 @@ inline constexpr float kRobustFarScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f
 // pairs with 1/-0 = -inf consistently).
 template <int V>
 struct BoxRay {
-    vfloat<V> o[3], inv_d[3];
+    vfloat<V> o_inv_d[3], inv_d[3];  // slab distance t = bound * inv_d - o_inv_d: one FMA
     int near_row[3], far_row[3];
 
     [[gnu::always_inline]] BoxRay(const RayView& rays, uint32_t i) {
         const float o_[3] = {rays.ox[i], rays.oy[i], rays.oz[i]};
         const float d_[3] = {rays.dx[i], rays.dy[i], rays.dz[i]};
         for (int a = 0; a < 3; ++a) {
-            o[a] = vfloat<V>(o_[a]);
-            inv_d[a] = vfloat<V>(1.0f / d_[a]);
+            const float inv = 1.0f / d_[a];
+            inv_d[a] = vfloat<V>(inv);
+            o_inv_d[a] = vfloat<V>(o_[a] * inv);
             const bool negative = __builtin_signbit(d_[a]);
             near_row[a] = 2 * a + int(negative);
             far_row[a] = 2 * a + 1 - int(negative);
@@ -47,17 +48,17 @@ struct BoxRay {
 };
 
 // Which children the ray enters at t in [0, limit]; their entry distances go to t_near.
-// A slab that comes out NaN (0 * inf: the origin on a slab plane of a direction with a zero
-// component) is dropped by the NaN rule of simd::min / max (NaN first loses), which only widens
-// the interval.
+// A slab that comes out NaN (inf - inf: a direction with a zero component, 1/d infinite, and a
+// bound or origin at 0 or infinite) is dropped by the NaN rule of simd::min / max (NaN first
+// loses), which only widens the interval.
 template <int W, int V>
 WT_KERNEL_INLINE uint32_t enter_children(const BvhNode<W>& node, const BoxRay<V>& r, float limit, float* t_near) {
     uint32_t mask = 0;
     for (int c = 0; c < W; c += V) {
         vfloat<V> near[3], far[3];
         for (int a = 0; a < 3; ++a) {
-            near[a] = (vfloat<V>::loadu(&node.bounds[r.near_row[a]][c]) - r.o[a]) * r.inv_d[a];
-            far[a] = (vfloat<V>::loadu(&node.bounds[r.far_row[a]][c]) - r.o[a]) * r.inv_d[a];
+            near[a] = simd::msub(vfloat<V>::loadu(&node.bounds[r.near_row[a]][c]), r.inv_d[a], r.o_inv_d[a]);
+            far[a] = simd::msub(vfloat<V>::loadu(&node.bounds[r.far_row[a]][c]), r.inv_d[a], r.o_inv_d[a]);
         }
         const vfloat<V> enter = simd::max(simd::max(near[0], near[1]), simd::max(near[2], vfloat<V>(0.0f)));
         const vfloat<V> leave =
@@ -124,6 +125,14 @@ WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_
                 mask &= mask - 1;
                 if (!mask) {  // one child entered: no stack traffic
                     ref = node.child[c];
+                    continue;
+                }
+                const int second = __builtin_ctz(mask);
+                if (!(mask & (mask - 1))) {  // two: go to the nearer, keep the farther
+                    const bool first_nearer = !(t_near[second] < t_near[c]);
+                    const int near = first_nearer ? c : second, far = first_nearer ? second : c;
+                    stack_ref[top] = node.child[far], stack_t[top] = t_near[far], ++top;
+                    ref = node.child[near];
                     continue;
                 }
                 const int base = top;
