@@ -25,11 +25,11 @@ command -v valgrind >/dev/null || { echo "perf_gate: valgrind is not installed" 
 
 cases=()
 for isa in scalar sse4 avx2; do
-  for layout in raypacket primpacket; do
+  for layout in raypacket primpacket bvh; do
     for query in closest any; do cases+=("intersect/$isa/$layout/$query"); done
   done
 done
-cases+=("render/scalar" "render/avx2")
+cases+=("build" "render/scalar" "render/avx2")
 
 count_instructions() {  # CASE -> instruction count of the collected region
   local args
@@ -79,6 +79,7 @@ check_ratio intersect/scalar/raypacket/closest intersect/avx2/raypacket/closest 
 check_ratio intersect/scalar/raypacket/any intersect/avx2/raypacket/any 3
 check_ratio intersect/scalar/raypacket/closest intersect/sse4/raypacket/closest 2
 check_ratio render/scalar render/avx2 1.3
+check_ratio intersect/scalar/bvh/closest intersect/avx2/bvh/closest 2
 
 if [ "$failures" -gt 0 ]; then
   echo "perf_gate: $failures check(s) failed. If the change is intended, run bench/perf_gate.sh build --update and commit the baseline."

@@ -2,9 +2,12 @@
 // Run under callgrind with --collect-atstart=no: only the region between the two
 // CALLGRIND_TOGGLE_COLLECT marks is counted, so building the scene and the rays is not.
 //
-//   perf_gate_workload intersect ISA LAYOUT QUERY   ISA scalar|sse4|avx2, LAYOUT raypacket|primpacket,
+//   perf_gate_workload SCENE intersect ISA LAYOUT QUERY   ISA scalar|sse4|avx2, LAYOUT raypacket|primpacket,
 //                                                   QUERY closest|any: 20000 incoherent hexroom rays
-//   perf_gate_workload render ISA                   a 24x24, 2 spp hexroom render on one thread
+//                                                   LAYOUT bvh: the same rays through an 8-wide BVH
+//                                                   of the hexroom plus a 9,800-triangle displaced sphere
+//   perf_gate_workload SCENE build                  building that BVH on one thread
+//   perf_gate_workload SCENE render ISA             a 24x24, 2 spp hexroom render on one thread
 
 #include <cstdio>
 #include <cstring>
@@ -18,6 +21,8 @@
 #include "core/scene.h"
 #include "core/scene_loader.h"
 #include "kernels/intersect_dispatch.h"
+#include "displaced_sphere.h"
+#include "kernels/accel/bvh.h"
 #include "kernels/renderer.h"
 
 namespace {
@@ -49,16 +54,33 @@ Rays incoherent_rays(uint32_t count) {
 }
 
 int usage() {
-    std::fprintf(stderr, "usage: perf_gate_workload SCENE intersect ISA raypacket|primpacket closest|any\n"
+    std::fprintf(stderr, "usage: perf_gate_workload SCENE intersect ISA raypacket|primpacket|bvh closest|any\n"
+                         "       perf_gate_workload SCENE build\n"
                          "       perf_gate_workload SCENE render ISA\n");
     return 2;
+}
+
+// The BVH cases' scene: the hexroom plus bench_intersect's smallest mesh, so the tree has
+// depth and its leaves are full.
+Scene meshed_scene(SceneDescription description) {
+    description.meshes.push_back(bench::displaced_sphere(bench::benchmark_sphere(100, 50), 0));
+    return build_scene(description);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 4) return usage();
+    if (argc < 3) return usage();
     const std::string scene_path = argv[1], what = argv[2];
+    if (what == "build" && argc == 3) {
+        const Scene scene = meshed_scene(load_scene_file(scene_path));
+        CALLGRIND_TOGGLE_COLLECT;
+        const Bvh bvh = build_bvh(scene, {8, 8, 1});
+        CALLGRIND_TOGGLE_COLLECT;
+        std::printf("nodes %zu\n", bvh.stats().node_count);
+        return 0;
+    }
+    if (argc < 4) return usage();
     const auto isa = parse_isa(argv[3]);
     if (!isa || !cpu_supports(*isa)) {
         std::fprintf(stderr, "perf_gate_workload: ISA '%s' unknown or not supported here\n", argv[3]);
@@ -81,8 +103,11 @@ int main(int argc, char** argv) {
     }
     if (what != "intersect" || argc != 6) return usage();
     const std::string layout = argv[4], query = argv[5];
-    const Scene scene = build_scene(description);
+    const bool bvh_layout = layout == "bvh";
+    const Scene scene = bvh_layout ? meshed_scene(description) : build_scene(description);
     const SceneView view = scene_view(scene);
+    const Bvh bvh = bvh_layout ? build_bvh(scene, {8, 8, 1}) : Bvh();
+    const BvhView tree = bvh_view(bvh);
     const IntersectKernels& k = intersect_kernels(*isa);
     const Rays rays = incoherent_rays(20000);
     const std::size_t n = rays.ox.size();
@@ -91,11 +116,13 @@ int main(int argc, char** argv) {
     std::vector<uint8_t> occluded(n);
     const HitView hits{t.data(), u.data(), v.data(), prim.data()};
     const bool raypacket = layout == "raypacket";
-    if (!raypacket && layout != "primpacket") return usage();
+    if (!raypacket && !bvh_layout && layout != "primpacket") return usage();
     if (query != "closest" && query != "any") return usage();
 
     CALLGRIND_TOGGLE_COLLECT;
-    if (query == "closest") (raypacket ? k.closest_raypacket : k.closest_primpacket)(view, rays.view(), hits);
+    if (bvh_layout && query == "closest") k.closest_bvh(tree, rays.view(), hits);
+    else if (bvh_layout) k.any_bvh(tree, rays.view(), occluded.data());
+    else if (query == "closest") (raypacket ? k.closest_raypacket : k.closest_primpacket)(view, rays.view(), hits);
     else (raypacket ? k.any_raypacket : k.any_primpacket)(view, rays.view(), occluded.data());
     CALLGRIND_TOGGLE_COLLECT;
 
