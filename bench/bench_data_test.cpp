@@ -24,7 +24,7 @@
 
 #include "bench_data.h"
 #include "bench_scene.h"
-#include "core/scene_loader.h"
+#include "core/scene_file/scene_loader.h"
 #include "core/geometry_soa.h"
 #include "core/scene.h"
 #include "displaced_sphere.h"

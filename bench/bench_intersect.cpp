@@ -47,7 +47,7 @@
 #include "core/ray.h"
 #include "core/thread_pool.h"
 #include "kernels/accel/bvh.h"
-#include "kernels/intersect_dispatch.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "scene_workloads.h"
 #include "workloads.h"
 

@@ -15,9 +15,9 @@
 
 #include "bench_scene.h"
 #include "command_line.h"
-#include "core/film.h"
+#include "core/film/film.h"
 #include "core/scene.h"
-#include "kernels/intersect_dispatch.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "kernels/renderer.h"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "bench_data.h"
-#include "core/scene_loader.h"
+#include "core/scene_file/scene_loader.h"
 
 namespace wt::bench {
 

@@ -4,7 +4,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "kernels/intersect_dispatch.h"
+#include "kernels/isa/intersect_dispatch.h"
 
 namespace wt::bench {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "kernels/intersect_kernels.h"
+#include "kernels/isa/intersect_kernels.h"
 
 namespace wt::bench {
 

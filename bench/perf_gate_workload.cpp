@@ -17,10 +17,10 @@
 
 #include <valgrind/callgrind.h>
 
-#include "core/film.h"
+#include "core/film/film.h"
 #include "core/scene.h"
-#include "core/scene_loader.h"
-#include "kernels/intersect_dispatch.h"
+#include "core/scene_file/scene_loader.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "displaced_sphere.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/renderer.h"

@@ -4,7 +4,7 @@
 #include <map>
 
 #include "bench_scene.h"
-#include "kernels/intersect_dispatch.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "timed_step.h"
 
 namespace wt::bench {

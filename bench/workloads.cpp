@@ -5,8 +5,8 @@
 #include <glm/geometric.hpp>
 
 #include "core/path_vertex.h"
-#include "core/rng.h"
-#include "core/sampling.h"
+#include "core/sampling/rng.h"
+#include "core/sampling/sampling.h"
 
 namespace wt::bench {
 

@@ -4,7 +4,7 @@
 // distribution (here); the three are kept apart so each can change without touching the others.
 //
 // Every set is deterministic: random numbers come from the renderer's counter-based hash
-// (core/rng.h) with fixed seeds, so the rays are the same on every machine and every run, and
+// (core/sampling/rng.h) with fixed seeds, so the rays are the same on every machine and every run, and
 // the checksums in bench/README.md can be compared.
 
 #include <cstddef>

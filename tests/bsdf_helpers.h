@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "core/bsdf.h"
+#include "core/materials/bsdf.h"
 
 namespace wt::test {
 

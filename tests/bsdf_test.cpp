@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/bsdf.h"
-#include "core/fresnel.h"
+#include "core/materials/bsdf.h"
+#include "core/materials/fresnel.h"
 #include "bsdf_helpers.h"
 
 namespace wt {

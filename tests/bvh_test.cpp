@@ -13,7 +13,7 @@
 
 #include "bvh_test_scenes.h"
 #include "kernels/accel/bvh.h"
-#include "kernels/intersect_dispatch.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "test_scenes.h"
 
 namespace wt {

@@ -30,13 +30,13 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "core/bsdf.h"
+#include "core/materials/bsdf.h"
 #include "bsdf_helpers.h"
-#include "core/fresnel.h"
+#include "core/materials/fresnel.h"
 #include "core/path_vertex.h"
 #include "core/ray_offset.h"
-#include "core/sampling.h"
-#include "kernels/intersect_dispatch.h"
+#include "core/sampling/sampling.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "kernels/primitive_intersect.h"
 #include "kernels/scene_intersect.h"
 #include "render_helpers.h"

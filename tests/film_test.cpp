@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/film.h"
+#include "core/film/film.h"
 
 namespace wt {
 namespace {

@@ -7,7 +7,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
-#include "core/image_output.h"
+#include "core/film/image_output.h"
 
 namespace wt {
 namespace {

@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "core/scene_loader.h"
+#include "core/scene_file/scene_loader.h"
 
 namespace wt::test {
 

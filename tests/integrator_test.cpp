@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "kernels/intersect_dispatch.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "render_helpers.h"
 #include "statistics.h"
 #include "test_scenes.h"

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "kernels/intersect_dispatch.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "kernels/scene_intersect.h"
 #include "test_scenes.h"
 

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/film.h"
+#include "core/film/film.h"
 #include "core/scene.h"
 #include "kernels/renderer.h"
 #include "statistics.h"

@@ -11,8 +11,8 @@
 
 #include "core/float_minmax.h"
 #include "core/light_table.h"
-#include "core/rng.h"
-#include "core/sampling.h"
+#include "core/sampling/rng.h"
+#include "core/sampling/sampling.h"
 #include "statistics.h"
 
 namespace wt {

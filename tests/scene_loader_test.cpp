@@ -1,4 +1,4 @@
-#include "core/scene_loader.h"
+#include "core/scene_file/scene_loader.h"
 #include "core/scene.h"
 
 #include <array>

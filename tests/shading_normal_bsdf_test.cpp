@@ -17,9 +17,9 @@
 #include <gtest/gtest.h>
 
 #include "bsdf_helpers.h"
-#include "core/bsdf.h"
-#include "core/sampling.h"
-#include "core/shading_normal_bsdf.h"
+#include "core/materials/bsdf.h"
+#include "core/sampling/sampling.h"
+#include "core/materials/shading_normal_bsdf.h"
 #include "statistics.h"
 
 namespace wt {

@@ -26,13 +26,13 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "core/bsdf.h"
+#include "core/materials/bsdf.h"
 #include "bsdf_helpers.h"
-#include "core/fresnel.h"
+#include "core/materials/fresnel.h"
 #include "core/light_table.h"
-#include "core/rng.h"
-#include "core/sampling.h"
-#include "kernels/intersect_dispatch.h"
+#include "core/sampling/rng.h"
+#include "core/sampling/sampling.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "render_helpers.h"
 #include "statistics.h"
 #include "test_scenes.h"

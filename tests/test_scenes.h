@@ -12,7 +12,7 @@
 
 #include "core/scene.h"
 #include "core/scene_description.h"
-#include "core/scene_loader.h"
+#include "core/scene_file/scene_loader.h"
 
 namespace wt::test {
 

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "kernels/intersect_dispatch.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "test_scenes.h"
 
 namespace wt {

@@ -8,11 +8,11 @@
 #include <iostream>
 #include <sstream>
 
-#include "core/film.h"
-#include "core/image_output.h"
+#include "core/film/film.h"
+#include "core/film/image_output.h"
 #include "core/scene.h"
-#include "core/scene_loader.h"
-#include "kernels/intersect_dispatch.h"
+#include "core/scene_file/scene_loader.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "kernels/reference_integrator.h"
 
 namespace wt {

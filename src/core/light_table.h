@@ -12,7 +12,7 @@
 
 #include "core/geometry_soa.h"
 #include "core/ray_offset.h"
-#include "core/sampling.h"
+#include "core/sampling/sampling.h"
 #include "core/scene_description.h"
 
 namespace wt {

@@ -9,12 +9,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/bsdf.h"
+#include "core/materials/bsdf.h"
 #include "core/float_minmax.h"
 #include "core/ray_offset.h"
-#include "core/rng.h"
+#include "core/sampling/rng.h"
 #include "core/scene.h"
-#include "core/shading_normal_bsdf.h"
+#include "core/materials/shading_normal_bsdf.h"
 
 namespace wt {
 

@@ -8,11 +8,11 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/film.h"
+#include "core/film/film.h"
 #include "core/scene.h"
 #include "kernels/accel/bvh_view.h"
 #include "kernels/render_stats.h"
-#include "kernels/tiles.h"
+#include "kernels/wavefront/tiles.h"
 
 namespace wt {
 

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "core/thread_pool.h"
-#include "kernels/intersect_dispatch.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "kernels/reference_integrator.h"
-#include "kernels/tiles.h"
-#include "kernels/wavefront_renderer.h"
+#include "kernels/wavefront/tiles.h"
+#include "kernels/wavefront/wavefront_renderer.h"
 
 namespace wt {
 

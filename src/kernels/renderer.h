@@ -4,11 +4,11 @@
 #include <cstddef>
 #include <optional>
 
-#include "core/film.h"
+#include "core/film/film.h"
 #include "core/scene.h"
 #include "kernels/accel/accel_choice.h"
 #include "kernels/accel/bvh.h"
-#include "kernels/intersect_kernels.h"
+#include "kernels/isa/intersect_kernels.h"
 #include "kernels/render_stats.h"
 
 namespace wt {

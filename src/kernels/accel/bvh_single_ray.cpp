@@ -1,6 +1,6 @@
 #include "kernels/accel/bvh_single_ray.h"
 
-#include "kernels/intersect_dispatch.h"
+#include "kernels/isa/intersect_dispatch.h"
 
 namespace wt {
 namespace {

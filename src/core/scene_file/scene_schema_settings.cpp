@@ -1,0 +1,69 @@
+#include <cmath>
+#include <cstdint>
+
+#include <glm/geometric.hpp>
+
+#include "core/scene_file/scene_schema.h"
+
+// The camera and render sections.
+
+namespace wt {
+
+CameraDescription read_camera(const Reader& in, const Json& j, const std::string& path) {
+    in.expect_object(j, path);
+    in.check_keys(j, path, {"eye", "look_at", "up", "fov_degrees"});
+    CameraDescription camera;
+    camera.eye = in.vec3(in.required(j, "eye", path), member_path(path, "eye"));
+    camera.look_at = in.vec3(in.required(j, "look_at", path), member_path(path, "look_at"));
+    if (const Json* up = in.optional(j, "up")) camera.up = in.vec3(*up, member_path(path, "up"));
+    if (const Json* fov = in.optional(j, "fov_degrees")) {
+        const std::string fov_path = member_path(path, "fov_degrees");
+        camera.fov_degrees = in.number(*fov, fov_path);
+        if (!(camera.fov_degrees > 0.0f && camera.fov_degrees < 180.0f))
+            in.fail(fov_path, "must be in (0, 180) degrees, exclusive, got " + describe(*fov));
+    }
+
+    // The camera basis is normalize(look_at - eye) and normalize(cross(forward, up)); both must exist.
+    const glm::dvec3 forward = glm::dvec3(camera.look_at) - glm::dvec3(camera.eye);
+    if (glm::length(forward) == 0.0)
+        in.fail(member_path(path, "look_at"),
+                "must differ from camera.eye, got " + format_vec3(camera.look_at) + " for both");
+    const glm::dvec3 up = camera.up;
+    if (glm::length(up) == 0.0) in.fail(member_path(path, "up"), "must be non-zero, got [0, 0, 0]");
+    const double sine = glm::length(glm::cross(glm::normalize(forward), glm::normalize(up)));
+    if (sine <= 1e-6)
+        in.fail(member_path(path, "up"), "must not be parallel to the view direction (look_at - eye = " +
+                                             format_vec3(forward) + "), got " + format_vec3(up));
+    return camera;
+}
+
+RenderSettings read_render(const Reader& in, const Json& j, const std::string& path) {
+    in.expect_object(j, path);
+    in.check_keys(j, path, {"width", "height", "spp", "shadow_rays", "seed", "max_bounces", "rr_start_bounce",
+                            "triangle_test", "sphere_test", "fresnel"});
+    RenderSettings s;
+    const auto read_int = [&](const char* key, int& field, uint64_t lo, uint64_t hi) {
+        if (const Json* v = in.optional(j, key)) field = int(in.integer(*v, member_path(path, key), lo, hi));
+    };
+    read_int("width", s.width, 1, 65536);
+    read_int("height", s.height, 1, 65536);
+    read_int("spp", s.spp, 1, uint64_t(1) << 20);
+    read_int("shadow_rays", s.shadow_rays, 1, 1024);
+    read_int("max_bounces", s.max_bounces, 1, 1024);
+    read_int("rr_start_bounce", s.rr_start_bounce, 0, INT32_MAX);
+    if (const Json* seed = in.optional(j, "seed")) s.seed = in.integer(*seed, member_path(path, "seed"), 0, UINT64_MAX);
+    const auto read_choice = [&](const char* key, auto& field, auto parse, const char* allowed) {
+        const Json* v = in.optional(j, key);
+        if (!v) return;
+        const std::string key_path = member_path(path, key);
+        const auto parsed = parse(in.text(*v, key_path));
+        if (!parsed) in.fail(key_path, std::string("must be one of ") + allowed + ", got " + describe(*v));
+        field = *parsed;
+    };
+    read_choice("triangle_test", s.accuracy.triangles, parse_triangle_test, "\"moller_trumbore\", \"watertight\"");
+    read_choice("sphere_test", s.accuracy.spheres, parse_sphere_test, "\"quadratic\", \"cancellation_free\"");
+    read_choice("fresnel", s.accuracy.fresnel, parse_fresnel_model, "\"schlick\", \"exact\"");
+    return s;
+}
+
+}  // namespace wt

@@ -1,0 +1,84 @@
+#include "kernels/isa/intersect_dispatch.h"
+
+#include <stdexcept>
+
+namespace wt {
+
+const char* isa_name(Isa isa) {
+    switch (isa) {
+        case Isa::scalar: return "scalar";
+        case Isa::sse4: return "sse4";
+        case Isa::avx2: return "avx2";
+        case Isa::avx512: return "avx512";
+    }
+    return "unknown";
+}
+
+std::optional<Isa> parse_isa(const std::string& name) {
+    for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512})
+        if (name == isa_name(isa)) return isa;
+    return std::nullopt;
+}
+
+// __builtin_cpu_supports also checks that the OS saves the wide registers (XCR0), so a
+// kernel it allows cannot fault on a kernel that disabled AVX-512 state.
+bool cpu_supports(Isa isa) {
+    __builtin_cpu_init();
+    switch (isa) {
+        case Isa::scalar: return true;
+        case Isa::sse4: return __builtin_cpu_supports("sse4.2");
+        case Isa::avx2: return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+        case Isa::avx512:
+            return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+                   __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl");
+    }
+    return false;
+}
+
+Isa best_supported_isa() {
+    for (Isa isa : {Isa::avx512, Isa::avx2, Isa::sse4})
+        if (cpu_supports(isa)) return isa;
+    return Isa::scalar;
+}
+
+namespace {
+int kernel_variant(const AccuracySettings& a) {
+    return 2 * (a.triangles == TriangleTest::watertight) + (a.spheres == SphereTest::cancellation_free);
+}
+}  // namespace
+
+const IntersectKernels& intersect_kernels(Isa isa, const AccuracySettings& accuracy) {
+    if (!cpu_supports(isa)) throw std::runtime_error(std::string("this CPU does not support the ") + isa_name(isa) + " kernels");
+    const int variant = kernel_variant(accuracy);
+    switch (isa) {
+        case Isa::sse4: return kIntersectSse4[variant];
+        case Isa::avx2: return kIntersectAvx2[variant];
+        case Isa::avx512: return kIntersectAvx512[variant];
+        case Isa::scalar: break;
+    }
+    return kIntersectScalar[variant];
+}
+
+SceneView scene_view(const Scene& scene) {
+    const TriangleSoA& t = scene.triangles;
+    const SphereSoA& s = scene.spheres;
+    SceneView v;
+    v.triangles = {t.v0x.data(), t.v0y.data(), t.v0z.data(), t.e1x.data(), t.e1y.data(), t.e1z.data(),
+                   t.e2x.data(), t.e2y.data(), t.e2z.data(), t.scaled_nx.data(), t.scaled_ny.data(), t.scaled_nz.data(),
+                   t.v1x.data(), t.v1y.data(), t.v1z.data(),
+                   t.v2x.data(), t.v2y.data(), t.v2z.data(), uint32_t(t.size()), t.parallelogram_count};
+    v.spheres = {s.cx.data(), s.cy.data(), s.cz.data(), s.radius.data(), uint32_t(s.size()), uint32_t(t.size())};
+    return v;
+}
+
+RayView ray_view(const RayQueue& r) {
+    return {r.ox.data(), r.oy.data(), r.oz.data(), r.dx.data(), r.dy.data(), r.dz.data(), nullptr, uint32_t(r.count)};
+}
+
+HitView hit_view(HitQueue& h) { return {h.t.data(), h.u.data(), h.v.data(), h.prim.data()}; }
+
+RayView ray_view(const ShadowQueue& s) {
+    return {s.ox.data(), s.oy.data(), s.oz.data(), s.dx.data(), s.dy.data(), s.dz.data(), s.tmax.data(), uint32_t(s.count)};
+}
+
+}  // namespace wt

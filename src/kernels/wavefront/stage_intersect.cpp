@@ -1,0 +1,15 @@
+#include "kernels/isa/intersect_dispatch.h"
+#include "kernels/wavefront/stages.h"
+
+namespace wt {
+
+// Without a BVH, rays of a queue go in packets of N against one primitive at a time: on the
+// flat primitive list of a small scene this beat one ray against N primitives (bench/README.md).
+void intersect_closest_stage(const IntersectContext& context, const RayQueue& rays, HitQueue& hits) {
+    if (context.bvh)
+        context.kernels->closest_bvh(*context.bvh, ray_view(rays), hit_view(hits));
+    else
+        context.kernels->closest_raypacket(context.scene, ray_view(rays), hit_view(hits));
+}
+
+}  // namespace wt

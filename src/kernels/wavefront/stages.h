@@ -1,0 +1,37 @@
+#pragma once
+// The wavefront stages. Each is a loop over a queue; the driver (wavefront_renderer.cpp) runs
+// them in order for one batch of one tile on one worker, so the queues stay in that core's L2.
+
+#include "core/film/film.h"
+#include "core/scene.h"
+#include "kernels/isa/intersect_kernels.h"
+#include "kernels/wavefront/ray_queues.h"
+#include "kernels/render_stats.h"
+#include "kernels/wavefront/tiles.h"
+
+namespace wt {
+
+// Camera rays for samples [sample_begin, sample_end) of every pixel in the tile, sample-major,
+// so each pixel's samples sit in the path table in ascending order.
+void generate_camera_rays(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end,
+                          PathTable& paths, RayQueue& rays);
+
+// What the intersect and shadow stages trace against, and with which kernels: the BVH when
+// the render has one, else the flat primitive lists.
+struct IntersectContext {
+    SceneView scene;
+    const IntersectKernels* kernels;
+    const BvhView* bvh = nullptr;
+};
+
+// Closest hit of every ray in the queue.
+void intersect_closest_stage(const IntersectContext& context, const RayQueue& rays, HitQueue& hits);
+
+// Emission, light samples into `shadows`, and surviving continuations into `next_rays`.
+void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
+                 RayQueue& next_rays, ShadowQueue& shadows);
+
+// Any-hit test of every shadow ray; unblocked ones add their contribution to their path.
+void shadow_stage(const IntersectContext& context, ShadowQueue& shadows, PathTable& paths);
+
+}  // namespace wt

@@ -1,0 +1,24 @@
+#pragma once
+// Runs the wavefront stages over one tile: the tile's samples are cut into batches of about
+// `batch_paths` camera paths; each batch is generated, then intersect -> shade -> shadow repeat
+// until no ray is left, then its radiance goes to the film in sample order.
+
+#include "core/film/film.h"
+#include "core/scene.h"
+#include "kernels/wavefront/ray_queues.h"
+#include "kernels/render_stats.h"
+#include "kernels/wavefront/stages.h"
+#include "kernels/wavefront/tiles.h"
+
+namespace wt {
+
+// How many samples of every pixel of the tile one batch holds (at least 1).
+inline uint32_t samples_per_batch(const Tile& tile, std::size_t batch_paths, int spp) {
+    const std::size_t per_batch = std::max<std::size_t>(1, batch_paths / std::size_t(tile.pixel_count()));
+    return uint32_t(std::min<std::size_t>(per_batch, std::size_t(spp)));
+}
+
+void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, std::size_t batch_paths, WavefrontWorkspace& workspace,
+                           Film& film, RayCounts& counts);
+
+}  // namespace wt
