@@ -50,9 +50,13 @@ TEST(AccelRender, AutoUsesTheFlatListBelowTheCrossoverAndTheBvhAbove) {
     const test::RenderedFilm meshed = test::render_film(test::hexroom_with_meshes(8, 8, 1), Integrator::wavefront);
     EXPECT_EQ(meshed.result.accel, Accel::bvh);
     EXPECT_GT(meshed.result.bvh.node_count, 0u);
-    EXPECT_EQ(resolve_accel(Accel::automatic, kBvhCrossoverPrimitives - 1), Accel::brute);
-    EXPECT_EQ(resolve_accel(Accel::automatic, kBvhCrossoverPrimitives), Accel::bvh);
-    EXPECT_EQ(resolve_accel(Accel::brute, 1u << 20), Accel::brute);
+    for (int width : {1, 4, 8, 16}) {
+        EXPECT_EQ(resolve_accel(Accel::automatic, bvh_crossover(width) - 1, width), Accel::brute);
+        EXPECT_EQ(resolve_accel(Accel::automatic, bvh_crossover(width), width), Accel::bvh);
+        EXPECT_EQ(resolve_accel(Accel::brute, 1u << 20, width), Accel::brute);
+        EXPECT_EQ(resolve_accel(Accel::bvh, 1, width), Accel::bvh);
+    }
+    EXPECT_LT(bvh_crossover(8), bvh_crossover(16));
 }
 
 }  // namespace

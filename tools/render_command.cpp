@@ -98,7 +98,8 @@ int replay_sample(const Scene& scene, const RenderOptions& options, const DebugS
     // The same hits either way; a big scene is replayed through a BVH so it takes no longer than a render would.
     Bvh bvh;
     BvhView tree;
-    const bool use_bvh = resolve_accel(options.accel, scene.primitive_count()) == Accel::bvh;
+    const int width = intersect_kernels(options.isa.value_or(best_supported_isa())).width;
+    const bool use_bvh = resolve_accel(options.accel, scene.primitive_count(), width) == Accel::bvh;
     if (use_bvh) bvh = build_bvh(scene, options.bvh), tree = bvh_view(bvh);
     const glm::vec3 radiance = trace_reference_path(scene, pixel, d.sample, counts, &vertices, use_bvh ? &tree : nullptr);
     std::cout.precision(9);

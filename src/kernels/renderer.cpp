@@ -35,7 +35,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options, Film& film
 
     const Isa isa = options.isa.value_or(best_supported_isa());
     ThreadPool pool(threads);
-    const Accel accel = resolve_accel(options.accel, scene.primitive_count());
+    const IntersectKernels& kernels = intersect_kernels(isa, scene.settings.accuracy);
+    const Accel accel = resolve_accel(options.accel, scene.primitive_count(), kernels.width);
     Bvh bvh;
     BvhView bvh_tree;
     if (accel == Accel::bvh) {
@@ -43,7 +44,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options, Film& film
         bvh_tree = bvh_view(bvh);
     }
     const BvhView* tree = accel == Accel::bvh ? &bvh_tree : nullptr;
-    const IntersectContext context{scene_view(scene), &intersect_kernels(isa, scene.settings.accuracy), tree};
+    const IntersectContext context{scene_view(scene), &kernels, tree};
 
     const auto start = std::chrono::steady_clock::now();
     pool.parallel_for(tiles.size(), [&](std::size_t item, int worker) {

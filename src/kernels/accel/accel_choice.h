@@ -10,22 +10,30 @@
 namespace wt {
 
 enum class Accel {
-    automatic,  // brute force below kBvhCrossoverPrimitives primitives, else a BVH
+    automatic,  // brute force below bvh_crossover() primitives, else a BVH
     bvh,
     brute,      // the flat list: every ray against every primitive
 };
 
-// Measured with `wavetrace render` on the hexroom plus meshes of growing size (bench/README.md):
-// below this many primitives the flat ray-packet kernels render faster than the BVH.
-constexpr uint32_t kBvhCrossoverPrimitives = 64;
+// The flat ray-packet kernels test as many rays at once as they have lanes, so how many
+// primitives they beat a BVH on grows with the width. Measured with `wavetrace render` on the
+// hexroom plus a UV-sphere mesh of growing size (bench/README.md): the renders took equally
+// long at about 136 primitives with the 8-lane AVX2 kernels and 330 with the 16-lane AVX-512
+// ones, about 20 per lane.
+constexpr uint32_t kBvhCrossoverPrimitivesPerLane = 20;
+
+inline uint32_t bvh_crossover(int kernel_width) {
+    return kBvhCrossoverPrimitivesPerLane * uint32_t(kernel_width > 1 ? kernel_width : 1);
+}
 
 const char* accel_name(Accel accel);
 std::optional<Accel> parse_accel(const std::string& name);  // "auto", "bvh", "brute"
 
-// What `automatic` resolves to for a scene of `primitives` primitives.
-inline Accel resolve_accel(Accel requested, uint32_t primitives) {
+// What `automatic` resolves to for a scene of `primitives` primitives traced by kernels of
+// `kernel_width` lanes.
+inline Accel resolve_accel(Accel requested, uint32_t primitives, int kernel_width) {
     if (requested != Accel::automatic) return requested;
-    return primitives < kBvhCrossoverPrimitives ? Accel::brute : Accel::bvh;
+    return primitives < bvh_crossover(kernel_width) ? Accel::brute : Accel::bvh;
 }
 
 }  // namespace wt
