@@ -87,15 +87,8 @@ std::vector<BvhBuildOptions> build_variants() {
     return all;
 }
 
-std::vector<AccuracySettings> accuracy_variants() {
-    std::vector<AccuracySettings> all;
-    for (TriangleTest t : {TriangleTest::moller_trumbore, TriangleTest::watertight})
-        for (SphereTest s : {SphereTest::quadratic, SphereTest::cancellation_free}) all.push_back({t, s, FresnelModel::schlick});
-    return all;
-}
-
 TEST(Bvh, HexroomEqualsFlatKernelsOnEveryIsaWidthLeafSizeAndAccuracy) {
-    for (const AccuracySettings& accuracy : accuracy_variants()) {
+    for (const AccuracySettings& accuracy : test::accuracy_variants()) {
         SceneDescription d = test::hexroom(8, 8, 1);
         d.settings.accuracy = accuracy;
         const Scene scene = build_scene(d);

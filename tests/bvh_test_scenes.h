@@ -15,23 +15,10 @@
 #include "core/scene.h"
 #include "kernels/accel/bvh_view.h"
 #include "kernels/soa_views.h"
+#include "kernel_test_helpers.h"
 #include "test_scenes.h"
 
 namespace wt::test {
-
-struct RayBatch {
-    std::vector<float> ox, oy, oz, dx, dy, dz, tmax;
-    void push(const Ray& r, float t = std::numeric_limits<float>::infinity()) {
-        ox.push_back(r.origin.x), oy.push_back(r.origin.y), oz.push_back(r.origin.z);
-        dx.push_back(r.direction.x), dy.push_back(r.direction.y), dz.push_back(r.direction.z);
-        tmax.push_back(t);
-    }
-    std::size_t size() const { return ox.size(); }
-    RayView view(bool bounded) const {
-        return {ox.data(), oy.data(), oz.data(), dx.data(), dy.data(), dz.data(), bounded ? tmax.data() : nullptr,
-                uint32_t(ox.size())};
-    }
-};
 
 struct HitArrays {
     std::vector<float> t, u, v;

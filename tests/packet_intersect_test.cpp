@@ -12,25 +12,14 @@
 
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/scene_intersect.h"
+#include "kernel_test_helpers.h"
 #include "test_scenes.h"
 
 namespace wt {
 namespace {
 
-struct RayBatch {
-    std::vector<float> ox, oy, oz, dx, dy, dz, tmax;
-    void push(const Ray& r, float t = std::numeric_limits<float>::infinity()) {
-        ox.push_back(r.origin.x), oy.push_back(r.origin.y), oz.push_back(r.origin.z);
-        dx.push_back(r.direction.x), dy.push_back(r.direction.y), dz.push_back(r.direction.z);
-        tmax.push_back(t);
-    }
-    Ray ray(std::size_t i) const { return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}; }
-    RayView view(bool with_tmax, std::size_t first = 0, std::size_t count = SIZE_MAX) const {
-        count = std::min(count, ox.size() - first);
-        return {ox.data() + first, oy.data() + first, oz.data() + first, dx.data() + first, dy.data() + first,
-                dz.data() + first, with_tmax ? tmax.data() + first : nullptr, uint32_t(count)};
-    }
-};
+using test::RayBatch;
+using test::accuracy_variants;
 
 glm::vec3 random_direction(std::mt19937& rng) {
     std::normal_distribution<float> n;
@@ -104,15 +93,6 @@ protected:
     Scene scene_;
     RayBatch rays_;
 };
-
-// Every accuracy combination: Moller-Trumbore or watertight triangles, quadratic or
-// cancellation-free spheres.
-std::vector<AccuracySettings> accuracy_variants() {
-    std::vector<AccuracySettings> all;
-    for (TriangleTest t : {TriangleTest::moller_trumbore, TriangleTest::watertight})
-        for (SphereTest s : {SphereTest::quadratic, SphereTest::cancellation_free}) all.push_back({t, s, FresnelModel::schlick});
-    return all;
-}
 
 TEST_P(PacketIntersect, ClosestHitEqualsScalarInBothLayouts) {
   for (const AccuracySettings& accuracy : accuracy_variants()) {
