@@ -7,12 +7,19 @@ JOBS ?= $(shell nproc)
 SCENE ?= scenes/hexroom.json
 RENDER_DIR ?= renders
 
-.PHONY: render test test-long bench bench-deps perf-gate perf-gate-update build deps configure clean
+.PHONY: render render-mesh test test-long bench bench-deps perf-gate perf-gate-update build deps configure clean
 
 render: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
 	mkdir -p $(RENDER_DIR)
 	$(BUILD_DIR)/bin/wavetrace render $(SCENE) -o $(RENDER_DIR)/hexroom.png -o $(RENDER_DIR)/hexroom.exr
+
+# The hexroom with a 1M-triangle displaced sphere loaded from a PLY file through the BVH: the
+# mesh files are written first (build/bench-data, about 5 s).
+render-mesh: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace bench_data
+	mkdir -p $(RENDER_DIR)
+	$(BUILD_DIR)/bin/wavetrace render $(BUILD_DIR)/bench-data/hexroom_mesh1m.json -o $(RENDER_DIR)/hexroom_mesh1m.png
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE long
