@@ -5,8 +5,9 @@
 // query closest|any, workload primary|incoherent|shadow (workloads.h), kernel an ISA of ours
 // (scalar|sse4|avx2|avx512, those this CPU runs and --isa selects) or Embree's
 // (embree1|embree8|embree16, when built with Embree: rtcIntersect1/8/16 and rtcOccluded1/8/16).
-// Layouts of ours: bvh4 and bvh8 (the BVH of kernels/accel/bvh.h, 4 or 8 children per node) on
-// every scene; brute (ray packets over the flat primitive list, what the renderer traced
+// Layouts of ours: bvh4 and bvh8 (the BVH of kernels/accel/bvh.h, 4 or 8 children per node, one
+// ray at a time) and bvh8_packets (packets of the ISA's width, what the renderer uses for camera
+// rays) on every scene; brute (ray packets over the flat primitive list, what the renderer traced
 // before the BVH) and brute_primpacket (one ray against N primitives) on the hexroom only:
 // brute force over 10k+ triangles takes minutes per iteration. Embree's layouts: single, raypacket.
 //   build/<scene>/<bvh8|bvh4|embree>/threads:<1|2>
@@ -66,14 +67,15 @@ constexpr Query kAllQueries[] = {Query::closest, Query::any};
 
 const char* query_name(Query query) { return query == Query::closest ? "closest" : "any"; }
 
-enum class Layout { bvh4, bvh8, brute, brute_primpacket };
-constexpr Layout kBvhLayouts[] = {Layout::bvh4, Layout::bvh8};
+enum class Layout { bvh4, bvh8, bvh8_packets, brute, brute_primpacket };
+constexpr Layout kBvhLayouts[] = {Layout::bvh4, Layout::bvh8, Layout::bvh8_packets};
 constexpr Layout kBruteLayouts[] = {Layout::brute, Layout::brute_primpacket};
 
 const char* layout_name(Layout layout) {
     switch (layout) {
         case Layout::bvh4: return "bvh4";
         case Layout::bvh8: return "bvh8";
+        case Layout::bvh8_packets: return "bvh8_packets";
         case Layout::brute: return "brute";
         case Layout::brute_primpacket: return "brute_primpacket";
     }
@@ -158,12 +160,15 @@ std::string ray_benchmark_name(Query query, Workload workload, const std::string
 // Our kernels of `isa` in `layout` on one scene's workload.
 void measure_ours(benchmark::State& state, SceneWorkloads& scene, Query query, Workload workload, const IntersectKernels& kernels,
                   Layout layout) {
-    if (layout == Layout::bvh4 || layout == Layout::bvh8) {
+    if (layout == Layout::bvh4 || layout == Layout::bvh8 || layout == Layout::bvh8_packets) {
         const BvhView bvh = bvh_view(scene.bvh(layout == Layout::bvh4 ? 4 : 8));
+        const bool packets = layout == Layout::bvh8_packets;
+        const auto closest = packets ? kernels.closest_bvh_packets : kernels.closest_bvh;
+        const auto any = packets ? kernels.any_bvh_packets : kernels.any_bvh;
         if (query == Query::closest)
-            measure(state, scene, query, workload, [&](const RayView& rays, QueryOutputs& out) { kernels.closest_bvh(bvh, rays, out.hits()); });
+            measure(state, scene, query, workload, [&](const RayView& rays, QueryOutputs& out) { closest(bvh, rays, out.hits()); });
         else
-            measure(state, scene, query, workload, [&](const RayView& rays, QueryOutputs& out) { kernels.any_bvh(bvh, rays, out.occluded.data()); });
+            measure(state, scene, query, workload, [&](const RayView& rays, QueryOutputs& out) { any(bvh, rays, out.occluded.data()); });
         return;
     }
     const SceneView flat = scene_view(scene.scene());

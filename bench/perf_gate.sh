@@ -25,7 +25,7 @@ command -v valgrind >/dev/null || { echo "perf_gate: valgrind is not installed" 
 
 cases=()
 for isa in scalar sse4 avx2; do
-  for layout in raypacket primpacket bvh; do
+  for layout in raypacket primpacket bvh bvhpackets; do
     for query in closest any; do cases+=("intersect/$isa/$layout/$query"); done
   done
 done

@@ -5,7 +5,8 @@
 //   perf_gate_workload SCENE intersect ISA LAYOUT QUERY   ISA scalar|sse4|avx2, LAYOUT raypacket|primpacket,
 //                                                   QUERY closest|any: 20000 incoherent hexroom rays
 //                                                   LAYOUT bvh: the same rays through an 8-wide BVH
-//                                                   of the hexroom plus a 9,800-triangle displaced sphere
+//                                                   of the hexroom plus a 9,800-triangle displaced sphere;
+//                                                   bvhpackets: the same, in packets of the ISA's width
 //   perf_gate_workload SCENE build                  building that BVH on one thread
 //   perf_gate_workload SCENE render ISA             a 24x24, 2 spp hexroom render on one thread
 
@@ -54,7 +55,7 @@ Rays incoherent_rays(uint32_t count) {
 }
 
 int usage() {
-    std::fprintf(stderr, "usage: perf_gate_workload SCENE intersect ISA raypacket|primpacket|bvh closest|any\n"
+    std::fprintf(stderr, "usage: perf_gate_workload SCENE intersect ISA raypacket|primpacket|bvh|bvhpackets closest|any\n"
                          "       perf_gate_workload SCENE build\n"
                          "       perf_gate_workload SCENE render ISA\n");
     return 2;
@@ -103,7 +104,8 @@ int main(int argc, char** argv) {
     }
     if (what != "intersect" || argc != 6) return usage();
     const std::string layout = argv[4], query = argv[5];
-    const bool bvh_layout = layout == "bvh";
+    const bool packets = layout == "bvhpackets";
+    const bool bvh_layout = layout == "bvh" || packets;
     const Scene scene = bvh_layout ? meshed_scene(description) : build_scene(description);
     const SceneView view = scene_view(scene);
     const Bvh bvh = bvh_layout ? build_bvh(scene, {8, 8, 1}) : Bvh();
@@ -120,8 +122,8 @@ int main(int argc, char** argv) {
     if (query != "closest" && query != "any") return usage();
 
     CALLGRIND_TOGGLE_COLLECT;
-    if (bvh_layout && query == "closest") k.closest_bvh(tree, rays.view(), hits);
-    else if (bvh_layout) k.any_bvh(tree, rays.view(), occluded.data());
+    if (bvh_layout && query == "closest") (packets ? k.closest_bvh_packets : k.closest_bvh)(tree, rays.view(), hits);
+    else if (bvh_layout) (packets ? k.any_bvh_packets : k.any_bvh)(tree, rays.view(), occluded.data());
     else if (query == "closest") (raypacket ? k.closest_raypacket : k.closest_primpacket)(view, rays.view(), hits);
     else (raypacket ? k.any_raypacket : k.any_primpacket)(view, rays.view(), occluded.data());
     CALLGRIND_TOGGLE_COLLECT;

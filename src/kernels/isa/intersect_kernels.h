@@ -27,6 +27,9 @@ struct IntersectKernels {
     void (*any_primpacket)(const SceneView&, const RayView&, uint8_t* occluded);
     void (*closest_bvh)(const BvhView&, const RayView&, const HitView&);
     void (*any_bvh)(const BvhView&, const RayView&, uint8_t* occluded);
+    // N rays at a time through the BVH: for coherent rays (camera rays), same answers.
+    void (*closest_bvh_packets)(const BvhView&, const RayView&, const HitView&);
+    void (*any_bvh_packets)(const BvhView&, const RayView&, uint8_t* occluded);
 };
 
 // Each ISA has one kernel set per accuracy combination: (triangle test, sphere test), indexed

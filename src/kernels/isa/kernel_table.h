@@ -4,6 +4,7 @@
 
 #include "core/accuracy.h"
 #include "kernels/accel/brute_force.h"
+#include "kernels/accel/bvh_packet_traverse.h"
 #include "kernels/accel/bvh_traverse.h"
 #include "kernels/isa/intersect_kernels.h"
 
@@ -19,7 +20,9 @@ constexpr IntersectKernels make_kernels(Isa isa) {
             &raypacket_brute_force<Query::any, T, S, N>,
             &primpacket_brute_force<Query::any, T, S, N>,
             &bvh_query<Query::closest, T, S, N>,
-            &bvh_query<Query::any, T, S, N>};
+            &bvh_query<Query::any, T, S, N>,
+            &bvh_packet_query<Query::closest, T, S, N>,
+            &bvh_packet_query<Query::any, T, S, N>};
 }
 
 // One table entry per accuracy combination, in the order kernel_variant() indexes them:

@@ -24,8 +24,9 @@ struct IntersectContext {
     const BvhView* bvh = nullptr;
 };
 
-// Closest hit of every ray in the queue.
-void intersect_closest_stage(const IntersectContext& context, const RayQueue& rays, HitQueue& hits);
+// Closest hit of every ray in the queue. `coherent`: the rays are camera rays, neighbours in
+// the queue are neighbours in the image.
+void intersect_closest_stage(const IntersectContext& context, const RayQueue& rays, HitQueue& hits, bool coherent);
 
 // Emission, light samples into `shadows`, and surviving continuations into `next_rays`.
 void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,

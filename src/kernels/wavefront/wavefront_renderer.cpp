@@ -17,7 +17,7 @@ void render_wavefront_tile(const Scene& scene, const IntersectContext& context, 
         const std::size_t batch_size = ws.rays.count;
 
         for (uint32_t bounce = 0; ws.rays.count > 0; ++bounce) {
-            intersect_closest_stage(context, ws.rays, ws.hits);
+            intersect_closest_stage(context, ws.rays, ws.hits, bounce == 0);
             shade_stage(scene, bounce, ws.rays, ws.hits, ws.paths, ws.next_rays, ws.shadows);
             shadow_stage(context, ws.shadows, ws.paths);
             counts.shadow_rays += ws.shadows.count;
