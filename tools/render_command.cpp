@@ -148,8 +148,10 @@ int run_render_command(RenderCommandOptions& o) {
         if (!o.quiet)
             for (const std::string& note : description.notes) std::cerr << "wavetrace: note: " << note << "\n";
         apply_overrides(o, description.settings);
-        const RenderSettings& settings = description.settings;
+        const RenderSettings settings = description.settings;
         const Scene scene = build_scene(description);
+        description = SceneDescription();  // a big mesh's vertices and indices are in the scene now
+
 
         o.render.accel = *parse_accel(o.accel_name);  // CLI checked membership
         if (o.debug_sample)
