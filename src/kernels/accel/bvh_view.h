@@ -23,7 +23,7 @@ struct alignas(64) BvhNode {
 
 // A child reference: an inner node's index in the node array, or a leaf packed as
 //   bit 31: leaf, bits 29-30: kind (BvhLeafKind), bits 26-28: primitive count - 1,
-//   bits 0-25: index of its first primitive in the leaf-ordered array of its kind.
+//   bits 0-25: index of its first primitive in leaf order (its block, below, starts there).
 // Leaves hold one kind only, so the leaf test runs one straight-line primitive test.
 enum class BvhLeafKind : uint32_t { parallelogram = 0, triangle = 1, sphere = 2 };
 constexpr uint32_t kBvhLeafBit = 1u << 31;
@@ -32,14 +32,14 @@ constexpr uint32_t kBvhCountShift = 26;
 constexpr uint32_t kBvhFirstMask = (1u << kBvhCountShift) - 1;
 constexpr uint32_t kBvhMaxLeafSize = 8;
 constexpr uint32_t kBvhEmptyChild = 0xFFFFFFFFu;  // kind 3: no primitive kind; its box is empty, so it is never entered
-constexpr uint32_t kBvhMaxLeafPrimitives = kBvhFirstMask + 1;  // per kind
+constexpr uint32_t kBvhMaxLeafPrimitives = kBvhFirstMask + 1;  // in one tree: 67,108,864
 // Entries a traversal stack can need: the deepest path times the W - 1 siblings each node on it
 // may leave behind, plus one. build_bvh refuses a tree deeper than this allows.
 constexpr int kBvhStackSize = 1024;
 
 // Leaf primitives are stored leaf by leaf, each leaf as one block: its k primitives row by row,
 // k floats per row, the last row of the block their scene ids (as uint32 bits). A leaf test
-// reads one small contiguous block (two cache lines for two triangles) with the same SoA loads
+// reads one small contiguous block (6.5 cache lines for 8 triangles) with the same SoA loads
 // the flat kernels use on their arrays, instead of one cache line from each of 12 arrays.
 // Every primitive has `leaf_rows` floats; a leaf whose first primitive has index i starts at
 // float i * leaf_rows. A sphere leaf's block uses only its first kSphereRows rows.
