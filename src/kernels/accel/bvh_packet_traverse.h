@@ -164,10 +164,7 @@ void trace_bvh_packets(const BvhView& bvh, const RayView& rays, QueryOutput<Q> o
 // The packet traversal at this ISA's widest vector, for both node widths.
 template <Query Q, TriangleTest T, SphereTest S, int N>
 void bvh_packet_query(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
-    if (bvh.node_width == 4)
-        trace_bvh_packets<Q, T, S, 4, N>(bvh, rays, out);
-    else
-        trace_bvh_packets<Q, T, S, 8, N>(bvh, rays, out);
+    with_node_width(bvh, [&](auto width) { trace_bvh_packets<Q, T, S, width.value, N>(bvh, rays, out); });
 }
 
 }  // namespace WT_SIMD_ISA

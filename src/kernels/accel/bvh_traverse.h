@@ -11,6 +11,7 @@
 // whose o/d is rounded once per ray (a step of |o| along the ray at most).
 
 #include <cstdint>
+#include <type_traits>
 
 #include "core/accuracy.h"
 #include "kernels/accel/bvh_view.h"
@@ -172,12 +173,18 @@ void trace_bvh_rays(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out)
     }
 }
 
+// Calls f(std::integral_constant<int, W>) for the tree's node width W.
+template <typename F>
+WT_KERNEL_INLINE void with_node_width(const BvhView& bvh, F&& f) {
+    if (bvh.node_width == 4)
+        f(std::integral_constant<int, 4>{});
+    else
+        f(std::integral_constant<int, 8>{});
+}
+
 template <Query Q, TriangleTest T, SphereTest S, int MaxWidth>
 void bvh_query(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
-    if (bvh.node_width == 4)
-        trace_bvh_rays<Q, T, S, 4, MaxWidth>(bvh, rays, out);
-    else
-        trace_bvh_rays<Q, T, S, 8, MaxWidth>(bvh, rays, out);
+    with_node_width(bvh, [&](auto width) { trace_bvh_rays<Q, T, S, width.value, MaxWidth>(bvh, rays, out); });
 }
 
 }  // namespace WT_SIMD_ISA
