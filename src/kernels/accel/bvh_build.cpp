@@ -27,7 +27,7 @@ PrimRef make_ref(const Box& box, uint32_t id, BvhLeafKind kind) {
     _mm_store_ps(r.lo, box.lo);
     _mm_store_ps(r.hi, box.hi);
     r.id = id;
-    r.kind = uint32_t(kind);
+    r.kind = uint8_t(kind);
     return r;
 }
 

@@ -17,13 +17,16 @@ namespace wt {
 
 class ThreadPool;
 
-// A primitive as the builder sees it: its box, its scene id and its kind (BvhLeafKind), laid
-// out so each half loads as one SSE register. 32 bytes, moved by the partitions.
+// A primitive as the builder sees it: its box, its scene id, its kind (BvhLeafKind) and the bin
+// the last binning put it in on each axis (the partition that follows reads it instead of
+// computing it again), laid out so each half loads as one SSE register. 32 bytes, moved by the
+// partitions.
 struct alignas(16) PrimRef {
     float lo[3];
     uint32_t id;
     float hi[3];
-    uint32_t kind;
+    uint8_t kind;
+    uint8_t bin[3];
 
     Box box() const { return Box::of(_mm_load_ps(lo), _mm_load_ps(hi)); }
     __m128 centroid_times_two() const { return _mm_add_ps(_mm_load_ps(lo), _mm_load_ps(hi)); }
