@@ -43,8 +43,9 @@ PrimRef triangle_ref(const TriangleSoA& t, std::size_t i) {
     return make_ref(box, uint32_t(i), parallelogram ? BvhLeafKind::parallelogram : BvhLeafKind::triangle);
 }
 
-// In scene id order, in parallel over fixed chunks: count what each chunk keeps, then fill.
-std::vector<PrimRef> primitive_refs(const Scene& scene, ThreadPool& pool) {
+// In scene id order, in parallel over fixed chunks: count what each chunk keeps, then fill;
+// every primitive's leaf record (`records`, record_size() floats each) on the way.
+std::vector<PrimRef> primitive_refs(const Scene& scene, const BvhPrimitives& primitives, float* records, ThreadPool& pool) {
     const TriangleSoA& t = scene.triangles;
     const SphereSoA& s = scene.spheres;
     constexpr std::size_t kChunk = 1 << 16;
@@ -55,12 +56,16 @@ std::vector<PrimRef> primitive_refs(const Scene& scene, ThreadPool& pool) {
     });
     for (std::size_t c = 0; c < chunks; ++c) kept[c + 1] += kept[c];
     std::vector<PrimRef> refs(kept[chunks] + s.size());
+    const std::size_t stride = primitives.record_size();
     pool.parallel_for(chunks, [&](std::size_t c, int) {
         std::size_t out = kept[c];
-        for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i)
+        for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i) {
+            primitives.write_record(scene, i, records + i * stride);
             if (!never_hit(t, i)) refs[out++] = triangle_ref(t, i);
+        }
     });
     for (std::size_t i = 0; i < s.size(); ++i) {
+        primitives.write_record(scene, t.size() + i, records + (t.size() + i) * stride);
         const glm::vec3 c = s.center(i), r(s.radius[i]);
         Box box;
         box.extend_point(c - r), box.extend_point(c + r);
@@ -150,9 +155,8 @@ private:
 };
 
 // The leaves' primitive data, in parallel over fixed chunks of leaves.
-void fill_leaf_blocks(const Scene& scene, const std::vector<PrimRef>& refs, const std::vector<const BinaryNode*>& leaves,
+void fill_leaf_blocks(const float* records, const std::vector<PrimRef>& refs, const std::vector<const BinaryNode*>& leaves,
                       BvhPrimitives& primitives, ThreadPool& pool) {
-    const AlignedVector<float> records = primitives.records(scene, pool);
     primitives.resize(refs.size());
     constexpr std::size_t kLeavesPerJob = 4096;
     pool.parallel_for((leaves.size() + kLeavesPerJob - 1) / kLeavesPerJob, [&](std::size_t job, int) {
@@ -161,18 +165,18 @@ void fill_leaf_blocks(const Scene& scene, const std::vector<PrimRef>& refs, cons
             const BinaryNode& b = *leaves[i];
             uint32_t ids[kBvhMaxLeafSize];
             for (uint32_t l = 0; l < b.count; ++l) ids[l] = refs[b.first + l].id;
-            primitives.fill_leaf(records.data(), b.first, ids, b.count, refs[b.first].kind == uint32_t(BvhLeafKind::sphere));
+            primitives.fill_leaf(records, b.first, ids, b.count, refs[b.first].kind == uint32_t(BvhLeafKind::sphere));
         }
     });
 }
 
 template <int W>
-uint32_t collapse(const Scene& scene, const BinaryTree& tree, const std::vector<PrimRef>& refs, float pad,
+uint32_t collapse(const float* records, const BinaryTree& tree, const std::vector<PrimRef>& refs, float pad,
                   AlignedVector<BvhNode<W>>& nodes, BvhPrimitives& primitives, BvhStats& stats, ThreadPool& pool) {
     nodes.reserve(refs.size() / 4 + 1);
     WideCollapser<W> c(tree, refs, pad, nodes);
     const uint32_t root = c.emit(tree.root);
-    fill_leaf_blocks(scene, refs, c.leaves, primitives, pool);
+    fill_leaf_blocks(records, refs, c.leaves, primitives, pool);
     stats.leaf_count = c.leaves.size();
     stats.node_count = nodes.size();
     // Expected node visits plus primitive tests of a ray that hits the scene's box (the SAH of
@@ -200,7 +204,9 @@ Bvh build_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool* po
     Bvh bvh;
     bvh.node_width_ = options.node_width;
     bvh.primitives_.test = scene.settings.accuracy.triangles;
-    std::vector<PrimRef> refs = primitive_refs(scene, *pool);
+    // Not initialised: primitive_refs writes every record, in parallel.
+    const std::unique_ptr<float[]> records(new float[(scene.triangles.size() + scene.spheres.size()) * bvh.primitives_.record_size()]);
+    std::vector<PrimRef> refs = primitive_refs(scene, bvh.primitives_, records.get(), *pool);
     if (!refs.empty()) {
         SahSettings sah;
         sah.max_leaf_size = uint32_t(options.max_leaf_size);
@@ -211,8 +217,8 @@ Bvh build_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool* po
                                         " levels)");
         bvh.stats_.max_depth = tree.max_depth;
         const float pad = rounding_pad(tree.nodes[tree.root].box(), scene.camera.eye());
-        bvh.root_ = options.node_width == 4 ? collapse<4>(scene, tree, refs, pad, bvh.nodes4_, bvh.primitives_, bvh.stats_, *pool)
-                                            : collapse<8>(scene, tree, refs, pad, bvh.nodes8_, bvh.primitives_, bvh.stats_, *pool);
+        bvh.root_ = options.node_width == 4 ? collapse<4>(records.get(), tree, refs, pad, bvh.nodes4_, bvh.primitives_, bvh.stats_, *pool)
+                                            : collapse<8>(records.get(), tree, refs, pad, bvh.nodes8_, bvh.primitives_, bvh.stats_, *pool);
     }
     bvh.stats_.primitive_count = refs.size();
     bvh.stats_.node_bytes = bvh.nodes4_.size() * sizeof(BvhNode<4>) + bvh.nodes8_.size() * sizeof(BvhNode<8>);

@@ -1,9 +1,6 @@
 #include "kernels/accel/bvh_primitives.h"
 
-#include <algorithm>
 #include <cstring>
-
-#include "core/thread_pool.h"
 
 namespace wt {
 namespace {
@@ -14,30 +11,21 @@ float id_bits(uint32_t id) {
 }
 }  // namespace
 
-AlignedVector<float> BvhPrimitives::records(const Scene& scene, ThreadPool& pool) const {
+void BvhPrimitives::write_record(const Scene& scene, std::size_t i, float* out) const {
     const TriangleSoA& t = scene.triangles;
-    const SphereSoA& s = scene.spheres;
-    const std::size_t stride = rows() - 1;
-    AlignedVector<float> out((t.size() + s.size()) * stride);
-    constexpr std::size_t kChunk = 1 << 16;
-    pool.parallel_for((t.size() + kChunk - 1) / kChunk, [&](std::size_t c, int) {
-        for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i) {
-            float* r = out.data() + i * stride;
-            if (test == TriangleTest::watertight) {
-                const float row[] = {t.v0x[i], t.v0y[i], t.v0z[i], t.v1x[i], t.v1y[i], t.v1z[i], t.v2x[i], t.v2y[i], t.v2z[i]};
-                std::memcpy(r, row, sizeof row);
-            } else {
-                const float row[] = {t.v0x[i], t.v0y[i], t.v0z[i], t.e1x[i], t.e1y[i], t.e1z[i],
-                                     t.e2x[i], t.e2y[i], t.e2z[i], t.scaled_nx[i], t.scaled_ny[i], t.scaled_nz[i]};
-                std::memcpy(r, row, sizeof row);
-            }
-        }
-    });
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const float row[] = {s.cx[i], s.cy[i], s.cz[i], s.radius[i]};
-        std::memcpy(out.data() + (t.size() + i) * stride, row, sizeof row);
+    if (i >= t.size()) {
+        const SphereSoA& s = scene.spheres;
+        const std::size_t k = i - t.size();
+        const float row[] = {s.cx[k], s.cy[k], s.cz[k], s.radius[k]};
+        std::memcpy(out, row, sizeof row);
+    } else if (test == TriangleTest::watertight) {
+        const float row[] = {t.v0x[i], t.v0y[i], t.v0z[i], t.v1x[i], t.v1y[i], t.v1z[i], t.v2x[i], t.v2y[i], t.v2z[i]};
+        std::memcpy(out, row, sizeof row);
+    } else {
+        const float row[] = {t.v0x[i], t.v0y[i], t.v0z[i], t.e1x[i], t.e1y[i], t.e1z[i],
+                             t.e2x[i], t.e2y[i], t.e2z[i], t.scaled_nx[i], t.scaled_ny[i], t.scaled_nz[i]};
+        std::memcpy(out, row, sizeof row);
     }
-    return out;
 }
 
 void BvhPrimitives::fill_leaf(const float* records, uint32_t first, const uint32_t* ids, uint32_t count, bool spheres) {

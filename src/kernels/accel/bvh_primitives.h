@@ -22,11 +22,12 @@ struct BvhPrimitives {
 
     uint32_t rows() const { return test == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows; }
     void resize(std::size_t primitives) { blocks.resize(primitives * rows()); }
-    // Every scene primitive's block rows but the id, rows() - 1 floats each, in scene id order:
-    // read from the scene's arrays in order, so that filling the leaves, which visit the
-    // primitives in tree order, reads one record per primitive instead of one cache line from
-    // each of a dozen arrays.
-    AlignedVector<float> records(const Scene& scene, ThreadPool& pool) const;
+    // A primitive's block rows but the id, record_size() floats. The builder writes every
+    // primitive's record in scene id order, reading the scene's arrays in order, so that filling
+    // the leaves, which visit the primitives in tree order, reads one record per primitive
+    // instead of one cache line from each of a dozen arrays.
+    uint32_t record_size() const { return rows() - 1; }
+    void write_record(const Scene& scene, std::size_t id, float* out) const;
     // Writes the block of the leaf whose primitives, scene ids ids[0 .. count), start at index
     // `first`; all of one kind.
     void fill_leaf(const float* records, uint32_t first, const uint32_t* ids, uint32_t count, bool spheres);
