@@ -6,11 +6,11 @@
 // Built by binned SAH over all three axes (Wald 2007, "On fast construction of SAH-based
 // bounding volume hierarchies") into a binary tree, then collapsed into wide nodes by opening
 // the largest child first (as Embree's BVH4/8 builders do). The build is deterministic: every
-// decision depends on the primitives alone, subtrees built in parallel are stitched in a fixed
-// order, so the tree is the same for any thread count and images stay bit-identical.
+// decision depends on the primitives alone and the wide nodes are laid out by one walk from the
+// root, so the tree is the same for any thread count and images stay bit-identical.
 //
 // Boxes are padded outward by a bound on the rounding error of the primitive tests, so a hit
-// the flat kernels report is never in a box the traversal rejects (see bvh_build.cpp).
+// the flat kernels report is never in a box the traversal rejects (see bvh_boxes.h).
 
 #include <cstddef>
 #include <cstdint>

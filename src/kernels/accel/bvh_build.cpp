@@ -74,8 +74,8 @@ std::vector<PrimRef> primitive_refs(const Scene& scene, const BvhPrimitives& pri
     return refs;
 }
 
-// Lays the binary tree out as W-wide nodes in depth-first order from the root, and the
-// primitives in the order the leaves are met.
+// Lays the binary tree out as W-wide nodes in depth-first order from the root, and lists the
+// leaves for fill_leaf_blocks.
 template <int W>
 class WideCollapser {
 public:
@@ -89,6 +89,7 @@ public:
 
     // Sums for the SAH cost of the result: node boxes' areas, leaf areas times their counts.
     double node_area_sum = 0.0, leaf_area_sum = 0.0;
+    std::vector<const BinaryNode*> leaves;  // in the order they were met
 
 private:
     uint32_t emit_inner(const BinaryNode& b) {
@@ -134,19 +135,12 @@ private:
     // The leaf's primitives keep their place in `refs` (the partitions made each leaf a
     // contiguous run there), so the blocks can be filled later, in parallel (fill_leaf_blocks).
     uint32_t emit_leaf(const BinaryNode& b) {
-        if (b.first + b.count > kBvhMaxLeafPrimitives)
-            throw std::invalid_argument("BVH: more than " + std::to_string(kBvhMaxLeafPrimitives) +
-                                        " primitives; the node format cannot index them");
         leaves.push_back(&b);
         leaf_area_sum += double(b.box().half_area()) * b.count;
         const uint32_t kind = refs_[b.first].kind;
         return kBvhLeafBit | (kind << kBvhKindShift) | ((b.count - 1) << kBvhCountShift) | b.first;
     }
 
-public:
-    std::vector<const BinaryNode*> leaves;
-
-private:
     static constexpr float kInf = std::numeric_limits<float>::infinity();
     const BinaryTree& tree_;
     const std::vector<PrimRef>& refs_;
@@ -207,6 +201,9 @@ Bvh build_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool* po
     // Not initialised: primitive_refs writes every record, in parallel.
     const std::unique_ptr<float[]> records(new float[(scene.triangles.size() + scene.spheres.size()) * bvh.primitives_.record_size()]);
     std::vector<PrimRef> refs = primitive_refs(scene, bvh.primitives_, records.get(), *pool);
+    if (refs.size() > kBvhMaxLeafPrimitives)
+        throw std::invalid_argument("BVH: " + std::to_string(refs.size()) + " primitives, more than the " +
+                                    std::to_string(kBvhMaxLeafPrimitives) + " its leaf references can index");
     if (!refs.empty()) {
         SahSettings sah;
         sah.max_leaf_size = uint32_t(options.max_leaf_size);
