@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "core/path_vertex.h"
 #include "kernels/wavefront/stages.h"
 
@@ -21,6 +23,7 @@ void generate_camera_rays(const Scene& scene, const Tile& tile, uint32_t sample_
             }
         }
     }
+    if (!paths.first_surface.empty()) std::fill_n(paths.first_surface.begin(), slot, FirstSurface{});
 }
 
 }  // namespace wt
