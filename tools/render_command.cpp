@@ -8,8 +8,10 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/film/aov.h"
 #include "core/film/film.h"
 #include "core/film/image_output.h"
+#include "core/scene_hash.h"
 #include "core/scene.h"
 #include "core/scene_file/scene_loader.h"
 #include "kernels/isa/intersect_dispatch.h"
@@ -49,6 +51,18 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
     cmd->add_option("--debug-sample", o.debug_sample,
                     "X,Y,S: trace only sample S of pixel (X,Y) with the reference integrator and print every vertex");
+    cmd->add_option("--aov", o.aov_list,
+                    "Extra layers in .exr outputs, comma-separated: albedo, normal, depth, variance, samples, or all")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                try {
+                    parse_aov_list(text);
+                    return std::string();
+                } catch (const std::invalid_argument& e) {
+                    return std::string(e.what());
+                }
+            },
+            "AOV,...", "AOV list"));
     cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
     return cmd;
 }
@@ -149,6 +163,7 @@ int run_render_command(RenderCommandOptions& o) {
             for (const std::string& note : description.notes) std::cerr << "wavetrace: note: " << note << "\n";
         apply_overrides(o, description.settings);
         const RenderSettings settings = description.settings;
+        const std::string scene_hash = hash_to_hex(scene_content_hash(description));
         const Scene scene = build_scene(description);
         description = SceneDescription();  // a big mesh's vertices and indices are in the scene now
 
@@ -159,7 +174,10 @@ int run_render_command(RenderCommandOptions& o) {
 
         if (o.outputs.empty()) o.outputs.push_back(std::filesystem::path(o.scene_path).stem().string() + ".png");
         for (const std::string& out : o.outputs) check_output_path(out);
-        const double film_bytes = Film::bytes_needed(settings.width, settings.height);
+        check_image_writer_available();
+        if (!o.aov_list.empty()) o.render.aovs = parse_aov_list(o.aov_list);  // the CLI checked it
+        const std::vector<std::string> film_channels = aov_film_channels(o.render.aovs);
+        const double film_bytes = Film::bytes_needed(settings.width, settings.height, film_channels.size());
         const double memory = physical_memory_bytes();
         if (memory > 0.0 && film_bytes > 0.5 * memory) {
             std::ostringstream msg;
@@ -173,10 +191,14 @@ int run_render_command(RenderCommandOptions& o) {
             o.render.isa = parse_isa(o.isa_name);
             if (!cpu_supports(*o.render.isa)) throw std::runtime_error("--isa " + o.isa_name + ": this CPU does not support it");
         }
-        Film film(settings.width, settings.height);
+        Film film(settings.width, settings.height, film_channels);
         const RenderResult result = render(scene, o.render, film);
         const std::vector<float> rgb = film.resolve();
-        for (const std::string& out : o.outputs) write_image(out, settings.width, settings.height, rgb);
+        const ImageChannels layers = resolve_aovs(film, o.render.aovs);
+        const ImageMetadata metadata{uint32_t(settings.spp), settings.seed, scene_hash, result.seconds, WAVETRACE_VERSION};
+        for (const std::string& out : o.outputs) write_image(out, settings.width, settings.height, rgb, &metadata, &layers);
+        if (o.render.aovs.any() && !o.quiet && std::none_of(o.outputs.begin(), o.outputs.end(), holds_layers))
+            std::cerr << "wavetrace: note: --aov layers are written to .exr outputs only; none was given\n";
 
         if (!o.quiet) {
             const RayCounts& c = result.counts;

@@ -28,6 +28,7 @@ struct RenderCommandOptions {
     std::string isa_name = "auto";
     std::string accel_name = "auto";
     std::optional<std::string> debug_sample;  // "X,Y,S": replay one sample instead of rendering
+    std::string aov_list;                     // --aov: "albedo,normal,..." or "all"; empty: none
     bool quiet = false;
 };
 

@@ -63,21 +63,21 @@ void aov_sample_values(const AovSelection& aovs, const FirstSurface& surface, fl
     if (aovs.depth) *out++ = surface.depth, *out++ = surface.coverage;
 }
 
-AovImage resolve_aovs(const Film& film, const AovSelection& aovs) {
-    AovImage image;
+ImageChannels resolve_aovs(const Film& film, const AovSelection& aovs) {
+    ImageChannels image;
     std::vector<std::size_t> averaged;  // film channels written as their mean
     for (const std::string& name : aov_film_channels(aovs)) {
         if (name == coverage_channel) continue;
-        image.channels.push_back(name);
+        image.names.push_back(name);
         averaged.push_back(channel_index(film, name));
     }
-    if (aovs.variance) image.channels.insert(image.channels.end(), {"variance.R", "variance.G", "variance.B"});
-    if (aovs.samples) image.channels.push_back("samples.Y");
-    if (image.channels.empty()) return image;
+    if (aovs.variance) image.names.insert(image.names.end(), {"variance.R", "variance.G", "variance.B"});
+    if (aovs.samples) image.names.push_back("samples.Y");
+    if (image.names.empty()) return image;
 
     const std::size_t depth = aovs.depth ? channel_index(film, depth_channel) : 0;
     const std::size_t coverage = aovs.depth ? channel_index(film, coverage_channel) : 0;
-    const std::size_t n = image.channels.size();
+    const std::size_t n = image.names.size();
     image.values.resize(film.pixel_total() * n);
     for (uint32_t p = 0; p < film.pixel_total(); ++p) {
         float* out = &image.values[p * n];

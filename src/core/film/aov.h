@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/film/film.h"
+#include "core/film/image_channels.h"
 #include "core/first_surface.h"
 
 namespace wt {
@@ -33,15 +34,9 @@ std::vector<std::string> aov_film_channels(const AovSelection& aovs);
 // One sample's extra-channel values (aov_film_channels(aovs).size() floats) into `out`.
 void aov_sample_values(const AovSelection& aovs, const FirstSurface& surface, float* out);
 
-// The AOV layers of an image: channel names as written to EXR (`albedo.R`, `N.R`, `Z`, ...) and
-// their values, interleaved per pixel, rows top to bottom. Empty when nothing is selected.
-struct AovImage {
-    std::vector<std::string> channels;
-    std::vector<float> values;
-};
-
-// Resolves the selected AOVs from a film made with aov_film_channels(aovs). Throws
+// The AOV layers of an image, channels named as written to EXR (`albedo.R`, `N.R`, `Z`, ...),
+// from a film made with aov_film_channels(aovs). Empty when nothing is selected. Throws
 // std::invalid_argument if the film lacks a channel the selection needs.
-AovImage resolve_aovs(const Film& film, const AovSelection& aovs);
+ImageChannels resolve_aovs(const Film& film, const AovSelection& aovs);
 
 }  // namespace wt
