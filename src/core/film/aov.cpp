@@ -40,11 +40,11 @@ AovSelection parse_aov_list(const std::string& text) {
         else if (word == "samples") s.samples = true;
         else if (word == "all") s.albedo = s.normal = s.depth = s.variance = s.samples = true;
         else
-            throw std::invalid_argument("--aov: unknown AOV '" + word + "' in '" + text +
+            throw std::invalid_argument("unknown AOV '" + word + "' in '" + text +
                                         "' (choose from albedo, normal, depth, variance, samples, or all; comma-separated)");
     }
     if (empty || (!text.empty() && text.back() == ','))
-        throw std::invalid_argument("--aov: empty AOV name in '" + text +
+        throw std::invalid_argument("empty AOV name in '" + text +
                                     "' (choose from albedo, normal, depth, variance, samples, or all; comma-separated)");
     return s;
 }
