@@ -27,25 +27,22 @@ std::size_t channel_index(const Film& film, const std::string& name) {
 }  // namespace
 
 AovSelection parse_aov_list(const std::string& text) {
+    const std::string choices = "' (choose from albedo, normal, depth, variance, samples, or all; comma-separated)";
     AovSelection s;
+    // getline drops a trailing empty field, so "albedo," is caught by the check on the last character.
+    if (text.empty() || text.back() == ',') throw std::invalid_argument("empty AOV name in '" + text + choices);
     std::istringstream in(text);
     std::string word;
-    bool empty = true;
     while (std::getline(in, word, ',')) {
-        empty = false;
         if (word == "albedo") s.albedo = true;
         else if (word == "normal") s.normal = true;
         else if (word == "depth") s.depth = true;
         else if (word == "variance") s.variance = true;
         else if (word == "samples") s.samples = true;
         else if (word == "all") s.albedo = s.normal = s.depth = s.variance = s.samples = true;
-        else
-            throw std::invalid_argument("unknown AOV '" + word + "' in '" + text +
-                                        "' (choose from albedo, normal, depth, variance, samples, or all; comma-separated)");
+        else if (word.empty()) throw std::invalid_argument("empty AOV name in '" + text + choices);
+        else throw std::invalid_argument("unknown AOV '" + word + "' in '" + text + choices);
     }
-    if (empty || (!text.empty() && text.back() == ','))
-        throw std::invalid_argument("empty AOV name in '" + text +
-                                    "' (choose from albedo, normal, depth, variance, samples, or all; comma-separated)");
     return s;
 }
 
