@@ -99,6 +99,15 @@ TEST_F(ImageOutput, FailedWriteLeavesNeitherTargetNorTemporary) {
 
 const ImageMetadata kMetadata{64, 18446744073709551615ull, "0123456789abcdef", 1.5, "9.8.7"};
 
+// The wavetrace: attributes, as text whatever their type in the file.
+void expect_metadata_of_kMetadata(const ImageData& in) {
+    EXPECT_EQ(in.attribute("wavetrace:spp"), "64");
+    EXPECT_EQ(in.attribute("wavetrace:seed"), "18446744073709551615");
+    EXPECT_EQ(in.attribute("wavetrace:scene_hash"), "0123456789abcdef");
+    EXPECT_EQ(in.attribute("wavetrace:render_seconds"), "1.5");
+    EXPECT_EQ(in.attribute("wavetrace:version"), "9.8.7");
+}
+
 TEST_F(ImageOutput, ExrHoldsTheLayersAfterTheBeautyAndTheMetadata) {
     const ImageChannels layers{{"albedo.R", "albedo.G", "albedo.B", "Z"}, {0.1f, 0.2f, 0.3f, 4.0f, 0.5f, 0.6f, 0.7f, INFINITY}};
     write_image(path("a.exr"), 2, 1, kPixels, &kMetadata, &layers);
@@ -110,11 +119,7 @@ TEST_F(ImageOutput, ExrHoldsTheLayersAfterTheBeautyAndTheMetadata) {
     EXPECT_EQ(in.value("albedo.B", 1, 0), 0.7f);
     EXPECT_EQ(in.value("Z", 0, 0), 4.0f);
     EXPECT_EQ(in.value("Z", 1, 0), INFINITY);
-    EXPECT_EQ(in.attribute("wavetrace:spp"), "64");
-    EXPECT_EQ(in.attribute("wavetrace:seed"), "18446744073709551615");
-    EXPECT_EQ(in.attribute("wavetrace:scene_hash"), "0123456789abcdef");
-    EXPECT_EQ(in.attribute("wavetrace:render_seconds"), "1.5");
-    EXPECT_EQ(in.attribute("wavetrace:version"), "9.8.7");
+    expect_metadata_of_kMetadata(in);
     EXPECT_EQ(in.attribute("Software"), "wavetrace 9.8.7");
 }
 
@@ -125,11 +130,7 @@ TEST_F(ImageOutput, PngHoldsTheMetadataAsTextAndTheBeautyOnly) {
     const ImageData in = read_image(path("a.png"));
     EXPECT_EQ(in.channels, (std::vector<std::string>{"R", "G", "B"}));
     EXPECT_EQ(bytes_of(in), bytes_of(read_image(path("plain.png"))));  // the pixels do not change with metadata
-    EXPECT_EQ(in.attribute("wavetrace:spp"), "64");
-    EXPECT_EQ(in.attribute("wavetrace:seed"), "18446744073709551615");
-    EXPECT_EQ(in.attribute("wavetrace:scene_hash"), "0123456789abcdef");
-    EXPECT_EQ(in.attribute("wavetrace:render_seconds"), "1.5");
-    EXPECT_EQ(in.attribute("wavetrace:version"), "9.8.7");
+    expect_metadata_of_kMetadata(in);
 }
 
 TEST_F(ImageOutput, JpegHoldsTheMetadataInItsDescription) {

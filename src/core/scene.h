@@ -52,7 +52,9 @@ struct SurfacePoint {
     bool smooth;
 };
 
-inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
+// Always inlined: with the shade loop instantiated with and without AOVs, g++ stopped inlining
+// it and the call cost the render 0.8 % of its instructions (perf gate).
+[[gnu::always_inline]] inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
     SurfacePoint s;
     const uint32_t triangle_count = uint32_t(scene.triangles.size());
     if (hit.prim < triangle_count) {
