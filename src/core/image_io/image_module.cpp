@@ -1,7 +1,6 @@
 #include "core/image_io/image_module.h"
 
 #include <dlfcn.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <mutex>
