@@ -181,6 +181,25 @@ TEST(Aov, BothIntegratorsAndAnyThreadCountGiveTheSameBits) {
     EXPECT_TRUE(wavefront == render_with(d, kAll, Integrator::wavefront, 3));
 }
 
+// Every estimator has its own shade loop with AOVs (stage_shade_aovs.cpp): the same bits from
+// both integrators, and the beauty that estimator gives without them.
+TEST(Aov, EveryEstimatorRecordsThemAlike) {
+    for (SamplerKind sampler : {SamplerKind::independent, SamplerKind::stratified, SamplerKind::sobol})
+        for (LightSampling lights : {LightSampling::nee, LightSampling::mis})
+            for (float clamp : {0.0f, 2.0f}) {
+                SceneDescription d = test::hexroom(16, 16, 2);
+                d.settings.estimator = {sampler, lights, clamp};
+                const Film wavefront = render_with(d, kAll, Integrator::wavefront);
+                EXPECT_TRUE(wavefront == render_with(d, kAll, Integrator::reference))
+                    << name_of(sampler) << " " << name_of(lights) << " clamp " << clamp;
+                const Film without = render_with(d, AovSelection{}, Integrator::wavefront);
+                for (uint32_t p = 0; p < wavefront.pixel_total(); ++p)
+                    ASSERT_EQ(wavefront.pixel_sum(p), without.pixel_sum(p)) << name_of(sampler) << " " << name_of(lights);
+                const ImageChannels aovs = resolve_aovs(wavefront, kAll);
+                EXPECT_GT(at(aovs, "albedo.R", 8 * 16 + 8), 0.0f);  // the middle of the room: something was recorded
+            }
+}
+
 // The hexroom through glass spheres and a mirror wall: the albedo stays within [0, 1], and
 // where a glass sphere is seen it shows what is behind or reflected (not zero, not the glass).
 TEST(Aov, AlbedoStaysInTheUnitRange) {
