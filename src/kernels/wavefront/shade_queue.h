@@ -1,9 +1,9 @@
 #pragma once
 // The shade stage's loop over a queue, for one estimator, with or without recording the AOVs'
-// first surface. Included by stage_shade.cpp, which instantiates the default estimator without
-// AOVs, stage_shade_options.cpp, which instantiates the other estimators without them, and
-// stage_shade_aovs.cpp, every estimator with them: a render without AOVs runs the loop it ran
-// before they existed, compiled as it was.
+// first surface. Included by stage_shade.cpp (the default estimator without AOVs),
+// stage_shade_options.cpp (the other estimators without them), stage_shade_aovs.cpp (the
+// default with them) and stage_shade_options_aovs.cpp (the others with them): a render without
+// AOVs runs the loop it ran before they existed, compiled as it was.
 
 #include "core/first_surface.h"
 #include "core/path_vertex.h"

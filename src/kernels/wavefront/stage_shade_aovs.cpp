@@ -1,12 +1,11 @@
-// The shade stage recording the AOVs' first surface, for every estimator, in a translation unit
-// of its own so that the loops without AOVs compile as they did before (see shade_queue.h).
+// The shade stage recording the AOVs' first surface, for the default estimator, in a translation
+// unit of its own: beside other instantiations g++ stops inlining the vertex helpers into it
+// (offset_ray_origin, the shadow queue's push ...: +5 % instructions in the perf gate's render
+// with --aov all), and the loops without AOVs keep compiling as they did before (shade_queue.h).
 #include "kernels/wavefront/shade_queue.h"
 
 namespace wt {
 
-#define WT_INSTANTIATE_SHADE_QUEUE_AOVS(sampler, lights, clamps) \
-    template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), true);
-WT_FOR_EACH_OPTIONAL_ESTIMATOR(WT_INSTANTIATE_SHADE_QUEUE_AOVS)
 template WT_SHADE_QUEUE_SIGNATURE(DefaultEstimator, true);
 
 }  // namespace wt
