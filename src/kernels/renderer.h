@@ -64,10 +64,10 @@ public:
     RenderSession(const RenderSession&) = delete;
     RenderSession& operator=(const RenderSession&) = delete;
 
-    // Adds samples `range` of every pixel to the film (which must match the scene's
-    // resolution and have the AOV channels of the options). Each pixel receives them in ascending order; since the film's sums are
-    // exact, the film ends the same bits however a render is cut into ranges, for any thread
-    // count, tile size and batch size. `tile_done(samples)`, if given, is called by the worker
+    // Adds samples `range` of every pixel to the film (which must match the scene's resolution
+    // and have the AOV channels of the options). Each pixel receives them in ascending order;
+    // since the film's sums are exact, the film ends the same bits however a render is cut into
+    // ranges, for any thread count, tile size and batch size. `tile_done(samples)`, if given, is called by the worker
     // that finished a tile with the number of samples it added: from several threads at once.
     void render_samples(Film& film, SampleRange range, const std::function<void(uint64_t samples)>& tile_done = {});
 
