@@ -23,7 +23,7 @@ namespace wt {
 inline Ray camera_ray(const Scene& scene, uint32_t pixel, uint32_t sample, uint64_t key) {
     const uint32_t width = uint32_t(scene.settings.width);
     const UniformPair jitter = VertexRandom(key, 0).pair(dim::camera_x);
-    const glm::vec2 offset = stratified_pixel_offset(sample, uint32_t(scene.settings.spp), jitter.first, jitter.second);
+    const glm::vec2 offset = stratified_pixel_offset(sample, uint32_t(scene.settings.stratified_spp()), jitter.first, jitter.second);
     return scene.camera.generate_ray(float(pixel % width) + offset.x, float(pixel / width) + offset.y);
 }
 

@@ -1,0 +1,42 @@
+#include "core/film/checkpoint_settings.h"
+
+namespace wt {
+
+std::vector<NamedSetting> image_settings(const RenderSettings& s) {
+    return {
+        {"seed", std::to_string(s.seed)},
+        {"shadow_rays", std::to_string(s.shadow_rays)},
+        {"max_bounces", std::to_string(s.max_bounces)},
+        {"rr_start_bounce", std::to_string(s.rr_start_bounce)},
+        {"strata_spp", std::to_string(s.stratified_spp())},
+        {"triangle_test", name_of(s.accuracy.triangles)},
+        {"sphere_test", name_of(s.accuracy.spheres)},
+        {"fresnel", name_of(s.accuracy.fresnel)},
+    };
+}
+
+namespace {
+
+const NamedSetting* find(const std::vector<NamedSetting>& settings, const std::string& name) {
+    for (const NamedSetting& s : settings)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+}  // namespace
+
+std::vector<std::string> setting_differences(const std::vector<NamedSetting>& a, const std::string& a_label,
+                                             const std::vector<NamedSetting>& b, const std::string& b_label) {
+    std::vector<std::string> lines;
+    for (const NamedSetting& s : a) {
+        const NamedSetting* other = find(b, s.name);
+        if (!other) lines.push_back(s.name + ": " + a_label + " " + s.value + ", " + b_label + " has no such setting");
+        else if (other->value != s.value)
+            lines.push_back(s.name + ": " + a_label + " " + s.value + ", " + b_label + " " + other->value);
+    }
+    for (const NamedSetting& s : b)
+        if (!find(a, s.name)) lines.push_back(s.name + ": " + a_label + " has no such setting, " + b_label + " " + s.value);
+    return lines;
+}
+
+}  // namespace wt
