@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/film/image_output.h"
 #include "core/version.h"
 
 namespace wt {
@@ -62,13 +63,21 @@ Checkpoint checkpoint_to_resume(const std::string& path, uint64_t scene_hash, Re
     return checkpoint;
 }
 
-bool try_write_checkpoint(const std::string& path, const CheckpointHeader& header, const Film& film, bool quiet) {
+void write_render_outputs(const std::vector<std::string>& outputs, const Film& film, const CheckpointHeader& header) {
+    const std::vector<float> rgb = film.resolve();
+    for (const std::string& out : outputs) {
+        if (is_checkpoint_path(out)) write_checkpoint_file(out, header, film);
+        else write_image(out, film.width(), film.height(), rgb);
+    }
+}
+
+bool try_write_checkpoint(const std::string& path, const CheckpointHeader& header, const Film& film, bool announce) {
     try {
         write_checkpoint_file(path, header, film);
-        if (!quiet) std::cerr << "wavetrace: checkpoint " << path << ": samples " << header.first_sample << ":" << header.next_sample << "\n";
+        if (announce) std::cerr << "wavetrace: checkpoint " << path << ": samples " << header.first_sample << ":" << header.next_sample << "\n";
         return true;
     } catch (const std::exception& e) {
-        std::cerr << "wavetrace: warning: " << e.what() << " (the previous checkpoint stays; rendering continues)\n";
+        std::cerr << "wavetrace: warning: " << e.what() << " (the previous checkpoint stays)\n";
         return false;
     }
 }

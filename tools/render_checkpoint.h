@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/film/checkpoint.h"
 #include "core/film/checkpoint_match.h"
@@ -27,8 +28,12 @@ CheckpointHeader checkpoint_header_for(uint64_t scene_hash, const RenderSettings
 Checkpoint checkpoint_to_resume(const std::string& path, uint64_t scene_hash, RenderSettings& settings,
                                 const FilmLayout& layout, bool strata_given);
 
-// Writes `film` to `path`; on failure prints a warning (the previous file stays, the render
-// goes on) and returns false.
-bool try_write_checkpoint(const std::string& path, const CheckpointHeader& header, const Film& film, bool quiet);
+// Writes every output of a render, images and checkpoints (.ckpt; `header` says what they
+// hold). Throws on the first failure, naming the file.
+void write_render_outputs(const std::vector<std::string>& outputs, const Film& film, const CheckpointHeader& header);
+
+// Writes `film` to `path` (saying so on stderr if `announce`); on failure prints a warning
+// (the previous file stays, the render goes on) and returns false.
+bool try_write_checkpoint(const std::string& path, const CheckpointHeader& header, const Film& film, bool announce);
 
 }  // namespace wt

@@ -21,6 +21,10 @@
 #include "kernels/progressive_render.h"
 #include "progress_display.h"
 #include "render_checkpoint.h"
+#if WAVETRACE_MPI
+#include "mpi_render.h"
+#include "mpi_render_command.h"
+#endif
 #include "render_passes.h"
 #include "render_summary.h"
 
@@ -105,16 +109,6 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.fresnel) s.accuracy.fresnel = *parse_fresnel_model(*o.fresnel);
 }
 
-// Writes every output, images and checkpoints (.ckpt, `header` says what they hold); a failure
-// is an error naming the file.
-void write_outputs(const std::vector<std::string>& outputs, const Film& film, const CheckpointHeader& header) {
-    const std::vector<float> rgb = film.resolve();
-    for (const std::string& out : outputs) {
-        if (is_checkpoint_path(out)) write_checkpoint_file(out, header, film);
-        else write_image(out, film.width(), film.height(), rgb);
-    }
-}
-
 std::string default_output(const RenderCommandOptions& o, SampleRange part) {
     const std::string stem = std::filesystem::path(o.scene_path).stem().string();
     if (!o.samples) return stem + ".png";
@@ -153,6 +147,9 @@ int run_render_command(RenderCommandOptions& o) {
             return replay_sample(scene, o.render, parse_debug_sample(*o.debug_sample, settings.width, settings.height));
 
         if (o.outputs.empty()) o.outputs.push_back(default_output(o, part));
+#if WAVETRACE_MPI
+        if (MpiJob::active()) check_mpi_render_options(o);
+#endif
         for (const std::string& out : o.outputs)
             if (is_checkpoint_path(out)) check_checkpoint_path(out, "-o");
             else check_output_path(out);
@@ -172,6 +169,10 @@ int run_render_command(RenderCommandOptions& o) {
             if (!cpu_supports(*o.render.isa)) throw std::runtime_error("--isa " + o.isa_name + ": this CPU does not support it");
         }
         RenderSession session(scene, o.render);
+#if WAVETRACE_MPI
+        if (MpiJob::active())
+            return run_render_on_mpi_ranks(o, session, scene, checkpoint_header_for(scene_hash, settings, {0, 0}, 0));
+#endif
         // The samples [first, next) the film holds, and [next, target) still to render.
         const uint32_t first = resumed ? resumed->header.first_sample : part.begin;
         const uint32_t next = resumed ? resumed->header.next_sample : first;
@@ -197,7 +198,7 @@ int run_render_command(RenderCommandOptions& o) {
         if (o.write_every)
             hooks.every(*o.write_every, [&](const Film& current, const PassReport& report) {
                 try {
-                    write_outputs(o.outputs, current, header_at(report.pass_samples.end));
+                    write_render_outputs(o.outputs, current, header_at(report.pass_samples.end));
                 } catch (const std::exception& e) {
                     // The previous images stay in place; the render goes on and tries again later.
                     std::cerr << "wavetrace: warning: " << e.what() << " (rendering continues)\n";
@@ -205,16 +206,18 @@ int run_render_command(RenderCommandOptions& o) {
             });
         if (o.checkpoint)
             hooks.every(o.checkpoint_every, [&](const Film& current, const PassReport& report) {
-                try_write_checkpoint(*o.checkpoint, header_at(report.pass_samples.end), current, o.quiet);
+                try_write_checkpoint(*o.checkpoint, header_at(report.pass_samples.end), current, !o.quiet);
             });
         install_interrupt_handlers();
         const ProgressiveResult passes_done = render_progressive(session, film, passes, &hooks);
         progress.finish();
 
-        // The checkpoint first: if an image cannot be written, the render can still be resumed.
+        // The checkpoint first, so a render whose image cannot be written can still be resumed;
+        // the images even when the checkpoint cannot be, so the samples are not all lost.
         const CheckpointHeader final_header = header_at(passes_done.end_sample);
-        if (o.checkpoint) write_checkpoint_file(*o.checkpoint, final_header, film);
-        write_outputs(o.outputs, film, final_header);
+        const bool checkpointed = !o.checkpoint || try_write_checkpoint(*o.checkpoint, final_header, film, false);
+        write_render_outputs(o.outputs, film, final_header);
+        if (!checkpointed) throw std::runtime_error(*o.checkpoint + ": the final checkpoint could not be written (the images were)");
         if (!o.quiet) {
             std::vector<std::string> written = o.outputs;
             if (o.checkpoint) written.push_back(*o.checkpoint);
@@ -225,6 +228,9 @@ int run_render_command(RenderCommandOptions& o) {
         return passes_done.reason == StopReason::interrupted ? exit_interrupted : 0;
     } catch (const std::exception& e) {
         std::cerr << "wavetrace: error: " << e.what() << "\n";
+#if WAVETRACE_MPI
+        if (MpiJob::active()) MpiJob::abort(1);  // the other ranks would wait for this one forever
+#endif
         return 1;
     }
 }

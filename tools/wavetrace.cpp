@@ -1,11 +1,33 @@
 // wavetrace: the command-line front end. Subcommands live in their own files.
 
+#include <signal.h>
+
+#include <cstdio>
+#include <cstdlib>
+
 #include <CLI/CLI.hpp>
 
 #include "merge_command.h"
 #include "render_command.h"
+#if WAVETRACE_MPI
+#include "mpi_render.h"
+#endif
 
 int main(int argc, char** argv) {
+#if WAVETRACE_MPI
+    wt::MpiJob mpi(argc, argv);  // only when started by mpirun with several ranks
+#else
+    // Under mpirun each rank would render the whole image and write the same files.
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+        if (const char* ranks = std::getenv(name); ranks && std::atoi(ranks) > 1) {
+            std::fprintf(stderr, "wavetrace: error: started as one of %s MPI ranks, but built without MPI "
+                                 "(configure with -DWAVETRACE_MPI=ON)\n", ranks);
+            return 1;
+        }
+#endif
+    // A file size limit (ulimit -f) makes a write fail with EFBIG, reported like a full disk;
+    // by default it would kill the process in the middle of a long render instead.
+    signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"wavetrace: a wavefront Monte Carlo path tracer for the CPU"};
     app.require_subcommand(1);
     wt::RenderCommandOptions render_options;
