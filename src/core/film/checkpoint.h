@@ -7,7 +7,7 @@
 //   magic "\x89WTCKPT\n", format version (u32), length of the text header (u32)
 //   text header: "key value" lines: program version, scene content hash, the sample ranges,
 //                the image-changing settings by name, the film's size and channels
-//   per-pixel sample counts (u32), then each channel's sums (fixed point, 8 or 16 bytes each)
+//   per pixel: its sample count (u32) and its sums (fixed point, 8 or 16 bytes per channel)
 //   XXH3-64 checksum of every byte before it
 // The sums are the film's exact fixed-point integers (fixed_point.h), so a film written and
 // read back is the same bits, and resuming from it is bit-identical to never having stopped.
@@ -47,8 +47,8 @@ struct CheckpointError : std::runtime_error {
 
 // Decodes a whole checkpoint from memory; `name` (a path) is what messages call it. Every
 // size is checked against the bytes there before anything is allocated, so a hostile or
-// damaged file costs at most about four times its own size in memory: the reader a fuzz target
-// calls. Throws CheckpointError.
+// damaged file costs at most about twice its own size in memory (the film): the reader a fuzz
+// target calls. Throws CheckpointError.
 Checkpoint parse_checkpoint(std::string_view bytes, const std::string& name);
 // Reads and parses `path`. Throws CheckpointError (including when it cannot be read).
 Checkpoint read_checkpoint_file(const std::string& path);

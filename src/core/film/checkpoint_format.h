@@ -14,10 +14,11 @@
 //                channel NAME BYTES          (one per film channel: sum.R sum.G sum.B
 //                                             square.R square.G square.B, then the extra
 //                                             channels; BYTES is 8 or 16)
-//   then       the sample count of every pixel, u32, rows top to bottom
-//   then       for each channel in order, every pixel's sum: a two's complement integer of
-//              BYTES bytes, in units of 2^-40 (fixed_point.h). A channel whose sums all fit in
-//              64 bits is stored in 8, which halves the file of a typical render.
+//   then       a record per pixel, rows top to bottom: its sample count (u32), then its sum
+//              of each channel in order, a two's complement integer of BYTES bytes in units of
+//              2^-40 (fixed_point.h). A channel whose sums all fit in 64 bits is stored in 8,
+//              which halves the file of a typical render. Records in the film's own order make
+//              writing and reading one pass over its memory.
 //   last       XXH3-64 of every byte before it, u64
 //
 // The checksum is there to catch accidents (a truncated copy, a flipped bit, a file that is

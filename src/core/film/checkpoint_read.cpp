@@ -7,7 +7,9 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
+#include <memory>
 #include <optional>
 
 #include <xxhash.h>
@@ -222,20 +224,22 @@ Checkpoint parse_checkpoint(std::string_view bytes, const std::string& name) {
     Checkpoint checkpoint{p.header, Film(p.width, p.height, extra)};
     Film& film = checkpoint.film;
     const uint32_t range = p.header.next_sample - p.header.first_sample;
-    uint64_t offset = fmt::preamble_bytes + header_length;
+    const unsigned char* record = data + fmt::preamble_bytes + header_length;
     std::vector<uint32_t>& counts = film.raw_counts();
-    for (std::size_t i = 0; i < counts.size(); ++i, offset += 4) {
-        counts[i] = fmt::get_u32(data + offset);
-        if (counts[i] > range)
-            fail_at(name, offset, "pixel (" + std::to_string(i % std::size_t(p.width)) + ", " +
-                                      std::to_string(i / std::size_t(p.width)) + ") has " + std::to_string(counts[i]) +
-                                      " samples, more than the " + std::to_string(range) + " of the file's sample range");
-    }
-    std::vector<FixedPoint>& sums = film.raw_sums();
+    FixedPoint* sums = film.raw_sums().data();
     const std::size_t stride = p.channels.size();
-    for (std::size_t c = 0; c < stride; ++c) {
-        const std::size_t bytes_per_sum = p.channels[c].bytes;
-        for (std::size_t i = c; i < sums.size(); i += stride, offset += bytes_per_sum) sums[i] = get_sum(data + offset, bytes_per_sum);
+    for (std::size_t i = 0; i < counts.size(); ++i, sums += stride) {
+        counts[i] = fmt::get_u32(record);
+        if (counts[i] > range)
+            fail_at(name, uint64_t(record - data),
+                    "pixel (" + std::to_string(i % std::size_t(p.width)) + ", " + std::to_string(i / std::size_t(p.width)) +
+                        ") has " + std::to_string(counts[i]) + " samples, more than the " + std::to_string(range) +
+                        " of the file's sample range");
+        record += 4;
+        for (std::size_t c = 0; c < stride; ++c) {
+            sums[c] = get_sum(record, p.channels[c].bytes);
+            record += p.channels[c].bytes;
+        }
     }
     return checkpoint;
 }
@@ -243,27 +247,28 @@ Checkpoint parse_checkpoint(std::string_view bytes, const std::string& name) {
 Checkpoint read_checkpoint_file(const std::string& path) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) fail(path, std::string("cannot open: ") + std::strerror(errno));
-    std::string bytes;
+    // Not a std::string: its resize would write zeros over a gigabyte only to read over them.
+    std::unique_ptr<char[]> bytes;
+    std::size_t done = 0;
     try {
         struct stat st;
         if (::fstat(fd, &st) != 0) fail(path, std::string("cannot read: ") + std::strerror(errno));
         if (!S_ISREG(st.st_mode)) fail(path, "not a regular file");
-        bytes.resize(std::size_t(st.st_size));
-        std::size_t done = 0;
-        while (done < bytes.size()) {
-            const ssize_t got = ::read(fd, &bytes[done], bytes.size() - done);
+        const std::size_t size = std::size_t(st.st_size);
+        bytes.reset(new char[std::max<std::size_t>(size, 1)]);
+        while (done < size) {
+            const ssize_t got = ::read(fd, bytes.get() + done, size - done);
             if (got < 0 && errno == EINTR) continue;
             if (got < 0) fail(path, std::string("cannot read: ") + std::strerror(errno));
             if (got == 0) break;  // shrank while being read: parsed as the truncated file it now is
             done += std::size_t(got);
         }
-        bytes.resize(done);
     } catch (...) {
         ::close(fd);
         throw;
     }
     ::close(fd);
-    return parse_checkpoint(bytes, path);
+    return parse_checkpoint(std::string_view(bytes.get(), done), path);
 }
 
 }  // namespace wt

@@ -36,7 +36,7 @@ public:
     ChecksummedSink(const ChecksummedSink&) = delete;
     ChecksummedSink& operator=(const ChecksummedSink&) = delete;
 
-    // Room for `n` (at most 64) contiguous bytes, to be filled by the caller.
+    // Room for `n` (at most a pixel's record, 4 + 22 * 16 bytes) contiguous bytes, to be filled by the caller.
     unsigned char* reserve(std::size_t n) {
         if (used_ + n > buffer_.size()) drain();
         unsigned char* p = buffer_.data() + used_;
@@ -80,14 +80,19 @@ bool is_token(const std::string& s) {
     return true;
 }
 
-// 8 bytes when every sum of the channel fits in 64 bits, else 16.
-std::size_t channel_bytes(const Film& film, std::size_t channel) {
+// Per channel, 8 bytes when every sum of the channel fits in 64 bits, else 16: one pass over
+// the film in memory order.
+std::vector<std::size_t> channel_bytes(const Film& film) {
     const std::vector<FixedPoint>& sums = film.raw_sums();
     const std::size_t stride = film.channels_per_pixel();
     const FixedPoint lo = std::numeric_limits<int64_t>::min(), hi = std::numeric_limits<int64_t>::max();
-    for (std::size_t i = channel; i < sums.size(); i += stride)
-        if (sums[i] < lo || sums[i] > hi) return 16;
-    return 8;
+    std::vector<bool> wide(stride, false);
+    for (std::size_t i = 0; i < sums.size(); i += stride)
+        for (std::size_t c = 0; c < stride; ++c)
+            if (sums[i + c] < lo || sums[i + c] > hi) wide[c] = true;
+    std::vector<std::size_t> bytes(stride);
+    for (std::size_t c = 0; c < stride; ++c) bytes[c] = wide[c] ? 16 : 8;
+    return bytes;
 }
 
 std::string header_text(const CheckpointHeader& h, const Film& film, const std::vector<std::size_t>& widths) {
@@ -115,8 +120,9 @@ std::string header_text(const CheckpointHeader& h, const Film& film, const std::
 
 void encode(const CheckpointHeader& h, const Film& film, ChecksummedSink& out) {
     const std::size_t channels = film.channels_per_pixel();
-    std::vector<std::size_t> widths(channels);
-    for (std::size_t c = 0; c < channels; ++c) widths[c] = channel_bytes(film, c);
+    const std::vector<std::size_t> widths = channel_bytes(film);
+    std::size_t pixel_bytes = 4;
+    for (std::size_t w : widths) pixel_bytes += w;
     const std::string text = header_text(h, film, widths);
 
     unsigned char* pre = out.reserve(fmt::preamble_bytes);
@@ -125,14 +131,17 @@ void encode(const CheckpointHeader& h, const Film& film, ChecksummedSink& out) {
     fmt::put_u32(pre + 12, uint32_t(text.size()));
     out.bytes(text.data(), text.size());
 
-    for (uint32_t count : film.raw_counts()) fmt::put_u32(out.reserve(4), count);
-    const std::vector<FixedPoint>& sums = film.raw_sums();
-    for (std::size_t c = 0; c < channels; ++c) {
-        for (std::size_t i = c; i < sums.size(); i += channels) {
-            const unsigned __int128 v = (unsigned __int128)sums[i];  // two's complement bits
-            unsigned char* p = out.reserve(widths[c]);
+    const std::vector<uint32_t>& counts = film.raw_counts();
+    const FixedPoint* sums = film.raw_sums().data();
+    for (std::size_t pixel = 0; pixel < counts.size(); ++pixel, sums += channels) {
+        unsigned char* p = out.reserve(pixel_bytes);
+        fmt::put_u32(p, counts[pixel]);
+        p += 4;
+        for (std::size_t c = 0; c < channels; ++c) {
+            const unsigned __int128 v = (unsigned __int128)sums[c];  // two's complement bits
             fmt::put_u64(p, uint64_t(v));
             if (widths[c] == 16) fmt::put_u64(p + 8, uint64_t(v >> 64));
+            p += widths[c];
         }
     }
     out.finish();
