@@ -138,31 +138,31 @@ TEST(Checkpoint, ForeignFilesAreNamedForWhatTheyAre) {
 
 TEST(Checkpoint, AbsurdSizesAreRefusedBeforeAllocating) {
     const std::string bytes = checkpoint_bytes(test_header(), test_film(2, 2, 3));
-    // 65536 x 65536 pixels would be 400 GB of film: refused against the file's 400-odd bytes.
-    EXPECT_NE(expect_refused(with_header(bytes, "film 2 2", "film 65536 65536")).find("truncated: the header describes"),
-              std::string::npos);
-    EXPECT_NE(expect_refused(with_header(bytes, "film 2 2", "film 65537 1")).find("not two integers from 1 to 65536"),
-              std::string::npos);
-    EXPECT_NE(expect_refused(with_header(bytes, "film 2 2", "film 0 2")).find("film size"), std::string::npos);
     std::string long_header = bytes;
     checkpoint_format::put_u32(reinterpret_cast<unsigned char*>(&long_header[12]), 0xffffffffu);
     EXPECT_NE(expect_refused(long_header).find("byte 12: header length 4294967295"), std::string::npos);
-    // A pixel claiming more samples than the range: the counts are checked too.
-    EXPECT_NE(expect_refused(with_header(bytes, "samples 0 4 8", "samples 0 2 8")).find("has 3 samples, more than the 2"),
-              std::string::npos);
-    EXPECT_NE(expect_refused(with_header(bytes, "samples 0 4 8", "samples 5 4 8")).find("is not FIRST <= NEXT <= TARGET"),
-              std::string::npos);
-    EXPECT_NE(expect_refused(with_header(bytes, "samples 0 4 8", "samples 0 4 99999999999")).find("target sample"),
-              std::string::npos);
-    EXPECT_NE(expect_refused(with_header(bytes, "channel sum.R 8", "channel sum.R 12")).find("8 or 16 expected"),
-              std::string::npos);
-    EXPECT_NE(expect_refused(with_header(bytes, "channel sum.G", "channel albedo")).find("channel 1 must be sum.G"),
-              std::string::npos);
-    EXPECT_NE(expect_refused(with_header(bytes, "setting seed 7", "setting seed 7\nsetting seed 8")).find("given twice"),
-              std::string::npos);
+
+    struct Case {
+        const char *from, *to, *expected;
+    };
     const std::string line2 = "byte " + std::to_string(16 + std::strlen("program_version \n") + std::strlen(program_version()));
-    EXPECT_NE(expect_refused(with_header(bytes, "scene_hash ", "scene-hash ")).find(line2 + ": expected 'scene_hash HEX'"),
-              std::string::npos);
+    const std::string bad_key = line2 + ": expected 'scene_hash HEX'";
+    const Case cases[] = {
+        // 65536 x 65536 pixels would be 400 GB of film: refused against the file's 400-odd bytes.
+        {"film 2 2", "film 65536 65536", "truncated: the header describes"},
+        {"film 2 2", "film 65537 1", "not two integers from 1 to 65536"},
+        {"film 2 2", "film 0 2", "film size"},
+        // A pixel claiming more samples than the range: the counts are checked too.
+        {"samples 0 4 8", "samples 0 2 8", "has 3 samples, more than the 2"},
+        {"samples 0 4 8", "samples 5 4 8", "is not FIRST <= NEXT <= TARGET"},
+        {"samples 0 4 8", "samples 0 4 99999999999", "target sample"},
+        {"channel sum.R 8", "channel sum.R 12", "8 or 16 expected"},
+        {"channel sum.G", "channel albedo", "channel 1 must be sum.G"},
+        {"setting seed 7", "setting seed 7\nsetting seed 8", "given twice"},
+        {"scene_hash ", "scene-hash ", bad_key.c_str()},
+    };
+    for (const Case& c : cases)
+        EXPECT_NE(expect_refused(with_header(bytes, c.from, c.to)).find(c.expected), std::string::npos) << c.to;
 }
 
 TEST(Checkpoint, DifferencesAreNamed) {

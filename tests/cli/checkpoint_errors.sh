@@ -4,12 +4,7 @@
 # file and the problem, exit 1, the files already there unchanged and nothing new written.
 # And a full disk during checkpoints (a file size limit): warnings, the render goes on, the
 # previous checkpoint stays.
-set -u
-wavetrace=$1
-scene=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/script_setup.sh"
 size=(--width 32 --height 24 --threads 2 -q)
 cd "$work"
 

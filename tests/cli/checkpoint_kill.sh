@@ -4,12 +4,7 @@
 # checkpoint whole: it still reads, and a resume from it finishes the render. The test waits
 # for the render's own "checkpoint" line and then for the temporary to appear, never for a
 # fixed time.
-set -u
-wavetrace=$1
-scene=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; [ -f "$work/log" ] && cat "$work/log"; exit 1; }
+source "$(dirname "$0")/script_setup.sh"
 
 # 1200x900 pixels make a checkpoint of about 56 MB, a write long enough to be caught in.
 mkfifo "$work/fifo"

@@ -3,12 +3,7 @@
 # The render spread over MPI ranks (a build with -DWAVETRACE_MPI=ON): 2 and 3 ranks on this
 # machine give the bits of one process and of `merge` of a --samples split; a rank killed
 # during the render fails the run with a message, and no image is written.
-set -u
-wavetrace=$1
-scene=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; [ -f "$work/log" ] && cat "$work/log"; exit 1; }
+source "$(dirname "$0")/script_setup.sh"
 # Root (CI containers) needs OpenMPI's explicit consent.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mpirun=(mpirun --oversubscribe)

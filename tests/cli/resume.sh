@@ -5,12 +5,7 @@
 # the first render's jitter grid (--strata-spp). The films are compared through their
 # checkpoints (-o X.ckpt), byte for byte. The test waits for the render's own "pass N done"
 # lines on stderr (through a FIFO), never for a fixed time.
-set -u
-wavetrace=$1
-scene=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; [ -f "$work/log" ] && cat "$work/log"; exit 1; }
+source "$(dirname "$0")/script_setup.sh"
 size=(--width 96 --height 72 --threads 2)
 
 # Renders "$@" with stderr through a FIFO, sends SIGINT after pass $1 and expects exit 3.
