@@ -183,13 +183,23 @@ TEST(Checkpoint, DifferencesAreNamed) {
     EXPECT_TRUE(checkpoint_differences(a, {4, 4, {}}, "x", a, {4, 4, {}}, "y").empty());
 }
 
-TEST(Checkpoint, StrataFollowSppUnlessSet) {
+std::string setting(const RenderSettings& s, const std::string& name) {
+    for (const NamedSetting& n : image_settings(s))
+        if (n.name == name) return n.value;
+    return "(absent)";
+}
+
+TEST(Checkpoint, StrataFollowSppUnlessSetAndOnlyForTheStratifiedSampler) {
     RenderSettings s;
     s.spp = 64;
-    EXPECT_EQ(image_settings(s)[4].value, "64");
+    EXPECT_EQ(setting(s, "strata_spp"), "64");
     s.spp = 128, s.strata_spp = 64;
-    EXPECT_EQ(image_settings(s)[4].name, "strata_spp");
-    EXPECT_EQ(image_settings(s)[4].value, "64");
+    EXPECT_EQ(setting(s, "strata_spp"), "64");
+    s.estimator.sampler = SamplerKind::sobol;
+    EXPECT_EQ(setting(s, "strata_spp"), "(absent)");
+    EXPECT_EQ(setting(s, "sampler"), "sobol");
+    s.estimator.clamp_indirect = 0.1f;
+    EXPECT_EQ(setting(s, "clamp_indirect"), "0.100000001");
 }
 
 struct CheckpointFile : ::testing::Test {

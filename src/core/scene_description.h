@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/accuracy.h"
+#include "core/estimator_settings.h"
 
 namespace wt {
 
@@ -77,6 +78,7 @@ struct RenderSettings {
     // raises spp keeps the grid its samples were drawn on, so they stay the samples it has.
     int strata_spp = 0;
     AccuracySettings accuracy;
+    EstimatorSettings estimator;
 
     int stratified_spp() const { return strata_spp > 0 ? strata_spp : spp; }
 };

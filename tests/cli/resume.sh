@@ -2,7 +2,7 @@
 # Usage: resume.sh WAVETRACE SCENE
 # A render interrupted by SIGINT at a random pass, then resumed, is bit-identical to one that
 # was never interrupted; so is one resumed with a larger --spp, against a render of that spp on
-# the first render's jitter grid (--strata-spp). The films are compared through their
+# the first render's jitter grid (--strata-spp), or, with the Sobol' sampler, against a plain render of that spp. The films are compared through their
 # checkpoints (-o X.ckpt), byte for byte. The test waits for the render's own "pass N done"
 # lines on stderr (through a FIFO), never for a fixed time.
 source "$(dirname "$0")/script_setup.sh"
@@ -53,4 +53,11 @@ interrupt_after_pass "$pass2" --spp 64 --checkpoint "$work/d.ckpt" -o "$work/sto
 cmp -s "$work/raised.ckpt" "$work/raised_whole.ckpt" || fail "resumed from 64 to 256 spp differs from a 256-spp render on the 64-spp grid"
 # Both sides: on its own grid a 256-spp render is another image.
 cmp -s "$work/raised.ckpt" "$work/whole.ckpt" && fail "the 64-spp grid made no difference: the comparison shows nothing"
+# The Sobol' sampler's samples do not depend on spp: raising it gives a plain render's bits.
+sobol=(--sampler sobol --light-sampling mis)
+"$wavetrace" render "$scene" "${size[@]}" "${sobol[@]}" --spp 8 -q -o "$work/sobol8.ckpt" || fail "sobol 8 spp"
+"$wavetrace" render "$scene" "${size[@]}" "${sobol[@]}" --resume "$work/sobol8.ckpt" --spp 24 -q -o "$work/sobol_raised.ckpt" ||
+  fail "sobol resume to 24 spp"
+"$wavetrace" render "$scene" "${size[@]}" "${sobol[@]}" --spp 24 -q -o "$work/sobol24.ckpt" || fail "sobol 24 spp"
+cmp -s "$work/sobol_raised.ckpt" "$work/sobol24.ckpt" || fail "sobol: resumed from 8 to 24 spp differs from a 24-spp render"
 echo "ok: interrupted after pass $pass ($held spp) and resumed: the uninterrupted bits; after pass $pass2 of 64 spp, resumed to 256: the bits of --strata-spp 64"

@@ -1,18 +1,37 @@
 #include "core/film/checkpoint_settings.h"
 
+#include <cstdio>
+
 namespace wt {
 
+namespace {
+
+// Nine significant digits tell every float apart: the clamp as it was parsed, not rounded.
+std::string exact(float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(v));
+    return text;
+}
+
+}  // namespace
+
 std::vector<NamedSetting> image_settings(const RenderSettings& s) {
-    return {
+    std::vector<NamedSetting> settings = {
         {"seed", std::to_string(s.seed)},
         {"shadow_rays", std::to_string(s.shadow_rays)},
         {"max_bounces", std::to_string(s.max_bounces)},
         {"rr_start_bounce", std::to_string(s.rr_start_bounce)},
-        {"strata_spp", std::to_string(s.stratified_spp())},
         {"triangle_test", name_of(s.accuracy.triangles)},
         {"sphere_test", name_of(s.accuracy.spheres)},
         {"fresnel", name_of(s.accuracy.fresnel)},
+        {"sampler", name_of(s.estimator.sampler)},
+        {"light_sampling", name_of(s.estimator.light_sampling)},
+        {"clamp_indirect", exact(s.estimator.clamp_indirect)},
     };
+    // Only the stratified sampler's samples depend on the spp it is told (its grid); the
+    // others' do not, so raising their spp needs no grid kept.
+    if (s.estimator.sampler == SamplerKind::stratified) settings.push_back({"strata_spp", std::to_string(s.stratified_spp())});
+    return settings;
 }
 
 namespace {
