@@ -189,15 +189,14 @@ std::string setting(const RenderSettings& s, const std::string& name) {
     return "(absent)";
 }
 
-TEST(Checkpoint, StrataFollowSppUnlessSetAndOnlyForTheStratifiedSampler) {
+TEST(Checkpoint, EstimatorSettingsAreStoredExactlyAndSppIsNot) {
     RenderSettings s;
-    s.spp = 64;
-    EXPECT_EQ(setting(s, "strata_spp"), "64");
-    s.spp = 128, s.strata_spp = 64;
-    EXPECT_EQ(setting(s, "strata_spp"), "64");
+    EXPECT_EQ(setting(s, "sampler"), "stratified");
+    EXPECT_EQ(setting(s, "spp"), "(absent)") << "spp is the sample range, which a resume may extend";
     s.estimator.sampler = SamplerKind::sobol;
-    EXPECT_EQ(setting(s, "strata_spp"), "(absent)");
+    s.estimator.light_sampling = LightSampling::mis;
     EXPECT_EQ(setting(s, "sampler"), "sobol");
+    EXPECT_EQ(setting(s, "light_sampling"), "mis");
     s.estimator.clamp_indirect = 0.1f;
     EXPECT_EQ(setting(s, "clamp_indirect"), "0.100000001");
 }

@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <charconv>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -43,18 +42,9 @@ CheckpointHeader checkpoint_header_for(uint64_t scene_hash, const RenderSettings
     return {program_version(), scene_hash, held.begin, held.end, target_sample, image_settings(settings)};
 }
 
-Checkpoint checkpoint_to_resume(const std::string& path, uint64_t scene_hash, RenderSettings& settings,
-                                const FilmLayout& layout, bool strata_given) {
+Checkpoint checkpoint_to_resume(const std::string& path, uint64_t scene_hash, const RenderSettings& settings,
+                                const FilmLayout& layout) {
     Checkpoint checkpoint = read_checkpoint_file(path);
-    if (!strata_given)
-        for (const NamedSetting& s : checkpoint.header.settings)
-            if (s.name == "strata_spp") {
-                // A value that is no positive integer is left to the comparison below to name.
-                int value = 0;
-                const char* end = s.value.data() + s.value.size();
-                const auto parsed = std::from_chars(s.value.data(), end, value);
-                if (parsed.ec == std::errc() && parsed.ptr == end && value > 0) settings.strata_spp = value;
-            }
     const CheckpointHeader expected = checkpoint_header_for(scene_hash, settings, {}, 0);
     const std::vector<std::string> differences =
         checkpoint_differences(checkpoint.header, layout_of(checkpoint.film), "checkpoint", expected, layout, "this render");

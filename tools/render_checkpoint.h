@@ -22,11 +22,11 @@ void check_checkpoint_path(const std::string& path, const std::string& option);
 CheckpointHeader checkpoint_header_for(uint64_t scene_hash, const RenderSettings& settings, SampleRange held,
                                        uint32_t target_sample);
 
-// Reads the checkpoint at `path` for a resume of this scene: `settings` (the scene's, with the
-// command line's overrides) take the checkpoint's jitter grid unless `strata_given`, then
-// everything must match, else CheckpointError lists each difference.
-Checkpoint checkpoint_to_resume(const std::string& path, uint64_t scene_hash, RenderSettings& settings,
-                                const FilmLayout& layout, bool strata_given);
+// Reads the checkpoint at `path` for a resume of this scene with `settings` (the scene's, with
+// the command line's overrides): everything must match, else CheckpointError lists each
+// difference.
+Checkpoint checkpoint_to_resume(const std::string& path, uint64_t scene_hash, const RenderSettings& settings,
+                                const FilmLayout& layout);
 
 // Writes every output of a render, images and checkpoints (.ckpt; `header` says what they
 // hold). Throws on the first failure, naming the file.

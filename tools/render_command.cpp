@@ -85,10 +85,6 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
     cmd->add_option("--samples", o.samples,
                     "BEGIN:END: render only samples BEGIN to END-1 of every pixel, a part of a split render for "
                     "`wavetrace merge` (default output: SCENE.BEGIN-END.ckpt)");
-    cmd->add_option("--strata-spp", o.strata_spp,
-                    "Lay the pixels' jitter grid out for N spp instead of --spp (a resume that raises spp keeps "
-                    "its first grid; this reproduces such a render in one go)")
-        ->check(CLI::Range(1, 1 << 20));
     cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but errors (no progress, no summary)");
     return cmd;
 }
@@ -108,7 +104,6 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.width) s.width = *o.width;
     if (o.height) s.height = *o.height;
     if (o.seed) s.seed = *o.seed;
-    if (o.strata_spp) s.strata_spp = *o.strata_spp;
     // The CLI checked membership already, so parsing cannot fail here.
     if (o.triangle_test) s.accuracy.triangles = *parse_triangle_test(*o.triangle_test);
     if (o.sphere_test) s.accuracy.spheres = *parse_sphere_test(*o.sphere_test);
@@ -139,7 +134,7 @@ int run_render_command(RenderCommandOptions& o) {
         std::optional<Checkpoint> resumed;
         if (o.resume) {
             RenderSettings& s = description.settings;
-            resumed = checkpoint_to_resume(*o.resume, scene_hash, s, {s.width, s.height, {}}, o.strata_spp.has_value());
+            resumed = checkpoint_to_resume(*o.resume, scene_hash, s, {s.width, s.height, {}});
             const CheckpointHeader& h = resumed->header;
             if (!o.spp && h.first_sample == 0) s.spp = int(h.target_sample);
             if (o.spp && uint32_t(*o.spp) < h.next_sample)

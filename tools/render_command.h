@@ -26,7 +26,6 @@ struct RenderCommandOptions {
     std::string accel_name = "auto";
     std::optional<std::string> debug_sample;  // "X,Y,S": replay one sample instead of rendering
     std::optional<double> time_limit, write_every;  // seconds
-    std::optional<int> strata_spp;
     std::optional<std::string> checkpoint, resume, samples;  // samples: "BEGIN:END", a partial render
     double checkpoint_every = 300.0;                         // seconds
     bool quiet = false;

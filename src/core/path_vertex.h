@@ -31,7 +31,7 @@ template <typename E>
 inline Ray camera_ray(const Scene& scene, uint32_t pixel, const PathSeed& path) {
     const uint32_t width = uint32_t(scene.settings.width);
     const typename E::Sampler random(path, 0, uint32_t(scene.settings.shadow_rays));
-    const glm::vec2 offset = random.pixel_offset(path.sample, uint32_t(scene.settings.stratified_spp()));
+    const glm::vec2 offset = random.pixel_offset(scene.settings.seed, pixel, path.sample);
     return scene.camera.generate_ray(float(pixel % width) + offset.x, float(pixel / width) + offset.y);
 }
 

@@ -73,14 +73,8 @@ struct RenderSettings {
     uint64_t seed = 0;       // every random number is keyed by (seed, pixel, sample, bounce, dim)
     int max_bounces = 64;    // hard cap; Russian roulette ends almost every path long before
     int rr_start_bounce = 3; // first bounce at which Russian roulette may end a path
-    // The spp the pixel's jitter grid is laid out for: its first k*k samples (k = floor(sqrt))
-    // own a cell each, the rest are uniform in the pixel. 0: spp itself. A resumed render that
-    // raises spp keeps the grid its samples were drawn on, so they stay the samples it has.
-    int strata_spp = 0;
     AccuracySettings accuracy;
     EstimatorSettings estimator;
-
-    int stratified_spp() const { return strata_spp > 0 ? strata_spp : spp; }
 };
 
 struct SceneDescription {

@@ -39,7 +39,7 @@ expect_fail "good.ckpt: not a checkpoint of this render: seed: checkpoint 0, thi
   "$wavetrace" render "$scene" "${size[@]}" --resume good.ckpt --seed 5
 expect_fail "size: checkpoint 32x24, this render 32x25" "$wavetrace" render "$scene" --width 32 --height 25 -q --resume good.ckpt
 expect_fail "fresnel: checkpoint schlick, this render exact" "$wavetrace" render "$scene" "${size[@]}" --fresnel exact --resume good.ckpt
-expect_fail "strata_spp: checkpoint 8, this render 4" "$wavetrace" render "$scene" "${size[@]}" --strata-spp 4 --resume good.ckpt
+expect_fail "sampler: checkpoint stratified, this render sobol" "$wavetrace" render "$scene" "${size[@]}" --sampler sobol --resume good.ckpt
 expect_fail "--spp 4: good.ckpt holds samples up to 8 already" "$wavetrace" render "$scene" "${size[@]}" --resume good.ckpt --spp 4
 expect_fail "a checkpoint's name must end in .ckpt" "$wavetrace" render "$scene" "${size[@]}" --checkpoint state.png
 expect_fail "directory 'nowhere' does not exist" "$wavetrace" render "$scene" "${size[@]}" --checkpoint nowhere/c.ckpt

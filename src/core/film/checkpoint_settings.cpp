@@ -16,7 +16,7 @@ std::string exact(float v) {
 }  // namespace
 
 std::vector<NamedSetting> image_settings(const RenderSettings& s) {
-    std::vector<NamedSetting> settings = {
+    return {
         {"seed", std::to_string(s.seed)},
         {"shadow_rays", std::to_string(s.shadow_rays)},
         {"max_bounces", std::to_string(s.max_bounces)},
@@ -28,10 +28,6 @@ std::vector<NamedSetting> image_settings(const RenderSettings& s) {
         {"light_sampling", name_of(s.estimator.light_sampling)},
         {"clamp_indirect", exact(s.estimator.clamp_indirect)},
     };
-    // Only the stratified sampler's samples depend on the spp it is told (its grid); the
-    // others' do not, so raising their spp needs no grid kept.
-    if (s.estimator.sampler == SamplerKind::stratified) settings.push_back({"strata_spp", std::to_string(s.stratified_spp())});
-    return settings;
 }
 
 namespace {

@@ -16,8 +16,8 @@ struct NamedSetting {
     bool operator==(const NamedSetting& o) const { return name == o.name && value == o.value; }
 };
 
-// Every image-changing setting but the resolution (the film's own size) and spp (the sample
-// range; what spp does to the image, the jitter grid, is `strata_spp`, always stored resolved).
+// Every image-changing setting but the resolution (the film's own size) and spp: no sampler's
+// samples depend on the spp (core/sampling/samplers.h), so spp is only the sample range.
 std::vector<NamedSetting> image_settings(const RenderSettings& settings);
 
 // One line per setting whose value differs or that only one side has, in `a`'s order, e.g.

@@ -32,23 +32,34 @@ public:
     static uint64_t key_of(uint64_t seed, uint32_t pixel, uint32_t sample) { return path_key(seed, pixel, sample); }
     IndependentSampler(const PathSeed& path, uint32_t bounce, uint32_t /*shadow_rays*/) : VertexRandom(path.key, bounce) {}
 
-    glm::vec2 pixel_offset(uint32_t /*sample*/, uint32_t /*spp*/) const {
+    glm::vec2 pixel_offset(uint64_t /*seed*/, uint32_t /*pixel*/, uint32_t /*sample*/) const {
         const UniformPair p = pair(dim::camera_x);
         return {p.first, p.second};
     }
 };
 
-// The renderer's original sampler: the pixel position stratified (stratified_pixel_offset), the
-// other dimensions independent.
+// The pixel position stratified, the other dimensions independent (VertexRandom). Sample s of
+// a pixel sits at point s of an Owen-scrambled (0, 2)-sequence (sobol.h) scrambled for that
+// pixel: every prefix of 2^m samples has one sample in each of the 2^m elementary intervals of
+// the pixel, and every sample is uniform over the pixel on its own. So the position depends on
+// the sample's index only, never on how many samples the render takes, and a render stopped
+// early (a time limit, Ctrl-C, any pass boundary) is an unbiased image of the samples it has;
+// resuming with more spp gives the same samples an uninterrupted render of that spp takes.
+// (A k x k jittered grid sized from the spp, visited in scanline order, has neither property:
+// the first quarter of its samples all lie in the top quarter of the pixel.)
 class StratifiedSampler : public VertexRandom {
 public:
     static uint64_t key_of(uint64_t seed, uint32_t pixel, uint32_t sample) { return path_key(seed, pixel, sample); }
     StratifiedSampler(const PathSeed& path, uint32_t bounce, uint32_t /*shadow_rays*/) : VertexRandom(path.key, bounce) {}
 
-    glm::vec2 pixel_offset(uint32_t sample, uint32_t spp) const {
-        const UniformPair jitter = pair(dim::camera_x);
-        return stratified_pixel_offset(sample, spp, jitter.first, jitter.second);
+    glm::vec2 pixel_offset(uint64_t seed, uint32_t pixel, uint32_t sample) const {
+        const uint64_t h = mix64(mix64(seed ^ kStrataSalt) + uint64_t(pixel) * kGoldenGamma);
+        const SobolPoint p = owen_scrambled_sobol_unshuffled(sample, {0u, uint32_t(h), uint32_t(h >> 32)});
+        return {p.x, p.y};
     }
+
+private:
+    static constexpr uint64_t kStrataSalt = 0x57a7a5a17ULL;  // keeps these seeds apart from the other keys
 };
 
 // Owen-scrambled Sobol' points (sobol.h), padded: each pair of dimensions of each bounce is its
@@ -65,7 +76,7 @@ public:
     SobolSampler(const PathSeed& path, uint32_t bounce, uint32_t shadow_rays)
         : base_(path.key + (uint64_t(bounce) << 32) * kGoldenGamma), sample_(path.sample), shadow_rays_(shadow_rays) {}
 
-    glm::vec2 pixel_offset(uint32_t /*sample*/, uint32_t /*spp*/) const {
+    glm::vec2 pixel_offset(uint64_t /*seed*/, uint32_t /*pixel*/, uint32_t /*sample*/) const {
         const UniformPair p = pair(dim::camera_x);
         return {p.first, p.second};
     }
