@@ -46,6 +46,18 @@ AovSelection parse_aov_list(const std::string& text) {
     return s;
 }
 
+AovSelection aovs_held_by(const Film& film) {
+    const auto has = [&](const char* name) {
+        const auto& c = film.extra_channels();
+        return std::find(c.begin(), c.end(), name) != c.end();
+    };
+    AovSelection s;
+    s.albedo = has(albedo_channels[0]);
+    s.normal = has(normal_channels[0]);
+    s.depth = has(depth_channel) && has(coverage_channel);
+    return s;
+}
+
 std::vector<std::string> aov_film_channels(const AovSelection& aovs) {
     std::vector<std::string> channels;
     if (aovs.albedo) channels.insert(channels.end(), std::begin(albedo_channels), std::end(albedo_channels));

@@ -28,6 +28,10 @@ struct AovSelection {
 // std::invalid_argument naming the word that is not an AOV and listing the ones that are.
 AovSelection parse_aov_list(const std::string& text);
 
+// The per-sample AOVs (albedo, normal, depth) whose channels `film` has: what a film read from a
+// checkpoint or merged from partial renders can show.
+AovSelection aovs_held_by(const Film& film);
+
 // The film's extra channels for `aovs`, in the order aov_sample_values writes them.
 std::vector<std::string> aov_film_channels(const AovSelection& aovs);
 
