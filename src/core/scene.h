@@ -52,7 +52,9 @@ struct SurfacePoint {
     bool smooth;
 };
 
-inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
+// Always inlined: where several instantiations of the shade loop call it (one per estimator),
+// g++ otherwise makes it a call, which costs the loop 5 %.
+[[gnu::always_inline]] inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
     SurfacePoint s;
     const uint32_t triangle_count = uint32_t(scene.triangles.size());
     if (hit.prim < triangle_count) {
