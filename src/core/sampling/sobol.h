@@ -63,10 +63,11 @@ constexpr std::array<uint32_t, 32> kDimension1Reversed = dimension1_columns_reve
 
 // Unscrambled Sobol' point `index` as 32-bit fractions, and dimension 1 with its bits reversed.
 inline uint32_t sobol_dimension0(uint32_t index) { return reverse_bits32(index); }
+// Without a branch on each bit of the index: the bits of consecutive indices are random to
+// the branch predictor, and the mispredictions cost more than the arithmetic.
 inline uint32_t sobol_dimension1_reversed(uint32_t index) {
     uint32_t x = 0;
-    for (int k = 0; index != 0; index >>= 1, ++k)
-        if (index & 1u) x ^= sobol_detail::kDimension1Reversed[std::size_t(k)];
+    for (int k = 0; index != 0; index >>= 1, ++k) x ^= sobol_detail::kDimension1Reversed[std::size_t(k)] & (0u - (index & 1u));
     return x;
 }
 inline uint32_t sobol_dimension1(uint32_t index) { return reverse_bits32(sobol_dimension1_reversed(index)); }
