@@ -17,12 +17,13 @@ namespace wt {
 namespace {
 
 constexpr double kAlpha = 1e-4;  // false-alarm probability of each goodness-of-fit test
+constexpr uint32_t kMaxSpp = 1024;  // the largest sample count any test draws
 
 template <typename Sampler>
 UniformPair draw(uint64_t seed, uint32_t pixel, uint32_t sample, uint32_t bounce, uint32_t dimension,
                  uint32_t shadow_rays = 1) {
     const PathSeed path{Sampler::key_of(seed, pixel, sample), sample};
-    return Sampler(path, bounce, shadow_rays).pair(dimension);
+    return Sampler(path, bounce, SampleCounts{kMaxSpp, shadow_rays}).pair(dimension);
 }
 
 // Points of one pixel in one pad, all `count` samples (light dimensions: sample * shadow_rays + j).
@@ -145,8 +146,8 @@ TEST(SobolSampler, PadsAndBouncesAreUncorrelated) {
         for (uint32_t pixel = 0; pixel < uint32_t(pixels); ++pixel) {
             for (uint32_t s = 0; s < uint32_t(spp); ++s) {
                 const PathSeed path{SobolSampler::key_of(11, pixel, s), s};
-                const float a = SobolSampler(path, q.bounce_a, 1)(q.dimension_a);
-                const float b = SobolSampler(path, q.bounce_b, 1)(q.dimension_b);
+                const float a = SobolSampler(path, q.bounce_a, SampleCounts{uint32_t(spp), 1})(q.dimension_a);
+                const float b = SobolSampler(path, q.bounce_b, SampleCounts{uint32_t(spp), 1})(q.dimension_b);
                 observed[std::size_t(a * bins) * bins + std::size_t(b * bins)] += 1.0;
             }
         }
@@ -158,7 +159,7 @@ TEST(SobolSampler, PadsAndBouncesAreUncorrelated) {
 
 TEST(SobolSampler, SingleDimensionsAreTheCoordinatesOfTheirPair) {
     for (uint32_t s = 0; s < 64; ++s) {
-        const SobolSampler sampler(PathSeed{SobolSampler::key_of(2, 40, s), s}, 2, 3);
+        const SobolSampler sampler(PathSeed{SobolSampler::key_of(2, 40, s), s}, 2, SampleCounts{64, 3});
         for (uint32_t d : {dim::camera_x, dim::bsdf_u, dim::bsdf_choice, dim::light_first, dim::light_first + 4u}) {
             const UniformPair p = sampler.pair(d);
             EXPECT_EQ(sampler(d), p.first);
@@ -217,15 +218,15 @@ TEST(Samplers, HashSamplersKeepTheRendererOriginalNumbers) {
         const PathSeed path{StratifiedSampler::key_of(9, 1234, s), s};
         EXPECT_EQ(path.key, key);
         for (uint32_t d = 0; d < 20; ++d) {
-            EXPECT_EQ(StratifiedSampler(path, 2, 3)(d), random_float(key, 2, d));
-            EXPECT_EQ(IndependentSampler(path, 2, 3)(d), random_float(key, 2, d));
+            EXPECT_EQ(StratifiedSampler(path, 2, {32, 3})(d), random_float(key, 2, d));
+            EXPECT_EQ(IndependentSampler(path, 2, {32, 3})(d), random_float(key, 2, d));
         }
         const UniformPair jitter = VertexRandom(key, 0).pair(dim::camera_x);
-        const glm::vec2 stratified = StratifiedSampler(path, 0, 3).pixel_offset(s, 32);
+        const glm::vec2 stratified = StratifiedSampler(path, 0, {32, 3}).pixel_offset(s, 32);
         const glm::vec2 expected = stratified_pixel_offset(s, 32, jitter.first, jitter.second);
         EXPECT_EQ(stratified.x, expected.x);
         EXPECT_EQ(stratified.y, expected.y);
-        EXPECT_EQ(IndependentSampler(path, 0, 3).pixel_offset(s, 32).x, jitter.first);
+        EXPECT_EQ(IndependentSampler(path, 0, {32, 3}).pixel_offset(s, 32).x, jitter.first);
     }
 }
 

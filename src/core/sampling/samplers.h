@@ -20,6 +20,11 @@
 
 namespace wt {
 
+// How many samples each sequence holds: a pixel's samples, and each vertex's light samples.
+struct SampleCounts {
+    uint32_t spp, shadow_rays;
+};
+
 // What one camera path's samplers are made from: a key hashed from (seed, pixel, sample) or,
 // for Sobol', from (seed, pixel), once when the path starts; and the sample's index in its pixel.
 struct PathSeed {
@@ -32,7 +37,7 @@ class IndependentSampler : public VertexRandom {
 public:
     static constexpr bool kCheapDraws = true;  // one hash: never worth a test to skip a draw
     static uint64_t key_of(uint64_t seed, uint32_t pixel, uint32_t sample) { return path_key(seed, pixel, sample); }
-    IndependentSampler(const PathSeed& path, uint32_t bounce, uint32_t /*shadow_rays*/) : VertexRandom(path.key, bounce) {}
+    IndependentSampler(const PathSeed& path, uint32_t bounce, const SampleCounts&) : VertexRandom(path.key, bounce) {}
 
     glm::vec2 pixel_offset(uint32_t /*sample*/, uint32_t /*spp*/) const {
         const UniformPair p = pair(dim::camera_x);
@@ -46,7 +51,7 @@ class StratifiedSampler : public VertexRandom {
 public:
     static constexpr bool kCheapDraws = true;
     static uint64_t key_of(uint64_t seed, uint32_t pixel, uint32_t sample) { return path_key(seed, pixel, sample); }
-    StratifiedSampler(const PathSeed& path, uint32_t bounce, uint32_t /*shadow_rays*/) : VertexRandom(path.key, bounce) {}
+    StratifiedSampler(const PathSeed& path, uint32_t bounce, const SampleCounts&) : VertexRandom(path.key, bounce) {}
 
     glm::vec2 pixel_offset(uint32_t sample, uint32_t spp) const {
         const UniformPair jitter = pair(dim::camera_x);
@@ -66,8 +71,11 @@ public:
     static uint64_t key_of(uint64_t seed, uint32_t pixel, uint32_t /*sample*/) {
         return mix64(mix64(seed ^ kSobolSalt) + uint64_t(pixel) * kGoldenGamma);
     }
-    SobolSampler(const PathSeed& path, uint32_t bounce, uint32_t shadow_rays)
-        : base_(path.key + (uint64_t(bounce) << 32) * kGoldenGamma), sample_(path.sample), shadow_rays_(shadow_rays) {}
+    SobolSampler(const PathSeed& path, uint32_t bounce, const SampleCounts& counts)
+        : base_(path.key + (uint64_t(bounce) << 32) * kGoldenGamma),
+          sample_(path.sample),
+          shadow_rays_(counts.shadow_rays),
+          index_mask_(index_mask(counts.spp * counts.shadow_rays)) {}
 
     glm::vec2 pixel_offset(uint32_t /*sample*/, uint32_t /*spp*/) const {
         const UniformPair p = pair(dim::camera_x);
@@ -76,14 +84,14 @@ public:
 
     UniformPair pair(uint32_t dimension) const {
         const Pad pad = pad_of(dimension);
-        const SobolPoint p = owen_scrambled_sobol(pad.index, seeds(pad.number, true));
+        const SobolPoint p = owen_scrambled_sobol(pad.index, seeds(pad.number, true), index_mask_);
         return {p.x, p.y};
     }
     float operator()(uint32_t dimension) const {
         if (dimension & 1u) return pair(dimension - 1).second;
         const Pad pad = pad_of(dimension);
         const SobolSeeds s = seeds(pad.number, false);
-        return owen_scrambled_sobol_x(shuffled_index(pad.index, s), s);
+        return owen_scrambled_sobol_x(shuffled_index(pad.index, s, index_mask_), s);
     }
 
 private:
@@ -104,8 +112,13 @@ private:
         return {uint32_t(h), uint32_t(h >> 32), with_y ? uint32_t(mix64(h)) : 0u};
     }
 
+    // The bits every index of the render fits in (see shuffled_index).
+    static uint32_t index_mask(uint32_t index_count) {
+        return index_count <= 1 ? 0u : 0xffffffffu >> __builtin_clz(index_count - 1);
+    }
+
     uint64_t base_;
-    uint32_t sample_, shadow_rays_;
+    uint32_t sample_, shadow_rays_, index_mask_;
 };
 
 }  // namespace wt

@@ -85,12 +85,20 @@ struct SobolSeeds {
 struct SobolPoint {
     float x, y;
 };
-inline uint32_t shuffled_index(uint32_t index, const SobolSeeds& seeds) { return owen_scramble(index, seeds.shuffle); }
+// The shuffled index, kept to the bits of `mask` (2^K - 1, every index of the sequence below
+// 2^K). Bits K and up of the shuffle depend only on the index's bits K and up, which are zero:
+// they are a constant, and dropping them keeps every aligned block of indices an aligned block,
+// so the nets stay nets. Without the mask they are random, and dimension 1's loop runs over
+// all 32 bits instead of K. (Dropping them changes the points by a digital shift, which the
+// Owen scramble that follows absorbs.)
+inline uint32_t shuffled_index(uint32_t index, const SobolSeeds& seeds, uint32_t mask) {
+    return owen_scramble(index, seeds.shuffle) & mask;
+}
 inline float owen_scrambled_sobol_x(uint32_t shuffled, const SobolSeeds& seeds) {
     return fraction_to_float(reverse_bits32(laine_karras_permutation(shuffled, seeds.scramble_x)));
 }
-inline SobolPoint owen_scrambled_sobol(uint32_t index, const SobolSeeds& seeds) {
-    const uint32_t shuffled = shuffled_index(index, seeds);
+inline SobolPoint owen_scrambled_sobol(uint32_t index, const SobolSeeds& seeds, uint32_t mask) {
+    const uint32_t shuffled = shuffled_index(index, seeds, mask);
     const uint32_t y = reverse_bits32(laine_karras_permutation(sobol_dimension1_reversed(shuffled), seeds.scramble_y));
     return {owen_scrambled_sobol_x(shuffled, seeds), fraction_to_float(y)};
 }
