@@ -3,6 +3,7 @@
 // bounces, and integrate a smooth function with an error falling faster than N^-1/2; the
 // independent sampler, the control, does none of the first and converges at N^-1/2.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <iostream>
@@ -17,13 +18,12 @@ namespace wt {
 namespace {
 
 constexpr double kAlpha = 1e-4;  // false-alarm probability of each goodness-of-fit test
-constexpr uint32_t kMaxSpp = 1024;  // the largest sample count any test draws
 
 template <typename Sampler>
 UniformPair draw(uint64_t seed, uint32_t pixel, uint32_t sample, uint32_t bounce, uint32_t dimension,
                  uint32_t shadow_rays = 1) {
     const PathSeed path{Sampler::key_of(seed, pixel, sample), sample};
-    return Sampler(path, bounce, SampleCounts{kMaxSpp, shadow_rays}).pair(dimension);
+    return Sampler(path, bounce, shadow_rays).pair(dimension);
 }
 
 // Points of one pixel in one pad, all `count` samples (light dimensions: sample * shadow_rays + j).
@@ -146,8 +146,8 @@ TEST(SobolSampler, PadsAndBouncesAreUncorrelated) {
         for (uint32_t pixel = 0; pixel < uint32_t(pixels); ++pixel) {
             for (uint32_t s = 0; s < uint32_t(spp); ++s) {
                 const PathSeed path{SobolSampler::key_of(11, pixel, s), s};
-                const float a = SobolSampler(path, q.bounce_a, SampleCounts{uint32_t(spp), 1})(q.dimension_a);
-                const float b = SobolSampler(path, q.bounce_b, SampleCounts{uint32_t(spp), 1})(q.dimension_b);
+                const float a = SobolSampler(path, q.bounce_a, 1)(q.dimension_a);
+                const float b = SobolSampler(path, q.bounce_b, 1)(q.dimension_b);
                 observed[std::size_t(a * bins) * bins + std::size_t(b * bins)] += 1.0;
             }
         }
@@ -159,7 +159,7 @@ TEST(SobolSampler, PadsAndBouncesAreUncorrelated) {
 
 TEST(SobolSampler, SingleDimensionsAreTheCoordinatesOfTheirPair) {
     for (uint32_t s = 0; s < 64; ++s) {
-        const SobolSampler sampler(PathSeed{SobolSampler::key_of(2, 40, s), s}, 2, SampleCounts{64, 3});
+        const SobolSampler sampler(PathSeed{SobolSampler::key_of(2, 40, s), s}, 2, 3);
         for (uint32_t d : {dim::camera_x, dim::bsdf_u, dim::bsdf_choice, dim::light_first, dim::light_first + 4u}) {
             const UniformPair p = sampler.pair(d);
             EXPECT_EQ(sampler(d), p.first);
@@ -218,16 +218,84 @@ TEST(Samplers, HashSamplersKeepTheRendererOriginalNumbers) {
         const PathSeed path{StratifiedSampler::key_of(9, 1234, s), s};
         EXPECT_EQ(path.key, key);
         for (uint32_t d = 0; d < 20; ++d) {
-            EXPECT_EQ(StratifiedSampler(path, 2, {32, 3})(d), random_float(key, 2, d));
-            EXPECT_EQ(IndependentSampler(path, 2, {32, 3})(d), random_float(key, 2, d));
+            EXPECT_EQ(StratifiedSampler(path, 2, 3)(d), random_float(key, 2, d));
+            EXPECT_EQ(IndependentSampler(path, 2, 3)(d), random_float(key, 2, d));
         }
         const UniformPair jitter = VertexRandom(key, 0).pair(dim::camera_x);
-        const glm::vec2 stratified = StratifiedSampler(path, 0, {32, 3}).pixel_offset(s, 32);
-        const glm::vec2 expected = stratified_pixel_offset(s, 32, jitter.first, jitter.second);
-        EXPECT_EQ(stratified.x, expected.x);
-        EXPECT_EQ(stratified.y, expected.y);
-        EXPECT_EQ(IndependentSampler(path, 0, {32, 3}).pixel_offset(s, 32).x, jitter.first);
+        EXPECT_EQ(IndependentSampler(path, 0, 3).pixel_offset(9, 1234, s).x, jitter.first);
     }
+}
+
+TEST(Sobol, DimensionOneIsThePascalMatrixRecurrence) {
+    // The columns v_k = v_(k-1) xor (v_(k-1) >> 1) from v_0 = 2^31 (Joe & Kuo's first
+    // polynomial), applied bit by bit: the definition the five-step transform must equal.
+    uint32_t columns[32];
+    columns[0] = 1u << 31;
+    for (int k = 1; k < 32; ++k) columns[k] = columns[k - 1] ^ (columns[k - 1] >> 1);
+    uint32_t state = 7;
+    for (uint32_t i = 0; i < 200000; ++i) {
+        state = state * 1664525u + 1013904223u;
+        const uint32_t index = i < 100000 ? i : state;
+        uint32_t expected = 0;
+        for (int k = 0; k < 32; ++k)
+            if (index >> k & 1u) expected ^= columns[k];
+        ASSERT_EQ(sobol_dimension1(index), expected) << "index " << index;
+    }
+}
+
+// The pixel positions of the stratified sampler, per pixel: point s of a scrambled (0, 2)-sequence.
+std::vector<glm::vec2> stratified_positions(uint64_t seed, uint32_t pixel, uint32_t count) {
+    std::vector<glm::vec2> points;
+    for (uint32_t s = 0; s < count; ++s) {
+        const PathSeed path{StratifiedSampler::key_of(seed, pixel, s), s};
+        points.push_back(StratifiedSampler(path, 0, 3).pixel_offset(seed, pixel, s));
+    }
+    return points;
+}
+
+TEST(StratifiedSampler, EveryPowerOfTwoPrefixOfAPixelHasOneSampleInEachElementaryInterval) {
+    for (uint32_t pixel = 0; pixel < 40; ++pixel) {
+        const std::vector<glm::vec2> points = stratified_positions(3, pixel, 256);
+        for (int m : {2, 4, 5, 8}) {
+            const uint32_t n = 1u << m;
+            for (int a = 0; a <= m; ++a) {  // cells 2^-a wide and 2^-(m-a) tall
+                std::vector<int> cells(n, 0);
+                for (uint32_t s = 0; s < n; ++s) {
+                    const uint32_t cx = uint32_t(points[s].x * float(1u << a)), cy = uint32_t(points[s].y * float(1u << (m - a)));
+                    ASSERT_LT(cx, 1u << a);
+                    ASSERT_LT(cy, 1u << (m - a));
+                    ++cells[(cy << a) | cx];
+                }
+                for (uint32_t c = 0; c < n; ++c)
+                    ASSERT_EQ(cells[c], 1) << "pixel " << pixel << ", first " << n << " samples, cells 2^-" << a
+                                           << " x 2^-" << (m - a) << ", cell " << c;
+            }
+        }
+    }
+}
+
+// What a stopped or time-limited render relies on: each sample alone is uniform over the pixel,
+// so any number of samples is an unbiased estimate. The jittered k x k grid the renderer used
+// before (sized from the spp, cells in scanline order) fails it: both sides are asserted.
+TEST(StratifiedSampler, AnyPrefixIsUniformOverThePixelUnlikeAGridSizedFromTheSpp) {
+    const int g = 6, pixels = 20000;
+    const uint32_t prefix = 3;
+    std::vector<double> observed(g * g, 0.0), expected(g * g, double(pixels) * prefix / (g * g));
+    for (int p = 0; p < pixels; ++p)
+        for (const glm::vec2 o : stratified_positions(11, uint32_t(p), prefix))
+            observed[std::size_t(std::min(g - 1, int(o.y * g)) * g + std::min(g - 1, int(o.x * g)))] += 1.0;
+    EXPECT_GT(test::chi_square_test(observed, expected).p_value, 1e-4);
+
+    const auto grid_offset = [](uint32_t sample, uint32_t spp, float jx, float jy) {
+        const uint32_t k = uint32_t(std::sqrt(double(spp)));
+        return glm::vec2((float(sample % k) + jx) / float(k), (float(sample / k) + jy) / float(k));
+    };
+    float grid_highest = 0.0f;
+    for (uint32_t s = 0; s < 16; ++s) grid_highest = std::max(grid_highest, grid_offset(s, 64, 0.999f, 0.999f).y);
+    EXPECT_LT(grid_highest, 0.25f) << "the grid's first 16 of 64 samples all lie in the top quarter";
+    float strata_highest = 0.0f;
+    for (const glm::vec2 o : stratified_positions(11, 0, 16)) strata_highest = std::max(strata_highest, o.y);
+    EXPECT_GT(strata_highest, 0.75f) << "the sequence's first 16 reach the bottom quarter";
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ packages=(
   libgtest-dev                  # tests
   libbenchmark-dev              # benchmarks
   valgrind                      # callgrind, for the instruction-count performance gate
+  libxxhash-dev                 # the checkpoint checksum (XXH3-64)
 )
 # Extra packages named on the command line (bench/install-bench-deps.sh: the benchmarks' own).
 packages+=("$@")

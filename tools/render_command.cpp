@@ -2,18 +2,31 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
 
+#include "core/film/checkpoint.h"
 #include "core/film/film.h"
 #include "core/film/image_output.h"
 #include "core/scene.h"
 #include "core/scene_file/scene_loader.h"
+#include "core/scene_hash.h"
+#include "debug_sample.h"
+#include "interrupt.h"
 #include "kernels/isa/intersect_dispatch.h"
-#include "kernels/reference_integrator.h"
+#include "kernels/progressive_render.h"
+#include "progress_display.h"
+#include "render_checkpoint.h"
+#if WAVETRACE_MPI
+#include "mpi_render.h"
+#include "mpi_render_command.h"
+#endif
+#include "render_passes.h"
+#include "render_summary.h"
 
 namespace wt {
 
@@ -55,83 +68,34 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
     cmd->add_option("--debug-sample", o.debug_sample,
                     "X,Y,S: trace only sample S of pixel (X,Y) with the reference integrator and print every vertex");
-    cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
+    cmd->add_option("--time-limit", o.time_limit,
+                    "Stop at the last pass boundary within SECONDS of rendering and write the image it has "
+                    "(the spp it reached is printed and in the image's metadata)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--write-every", o.write_every, "Also write the outputs every SECONDS, at pass boundaries")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--checkpoint", o.checkpoint,
+                    "Save the render's state to FILE (.ckpt) every --checkpoint-every seconds, at the end and when "
+                    "interrupted, for --resume (default with --resume: the resumed file)");
+    cmd->add_option("--checkpoint-every", o.checkpoint_every, "Seconds between checkpoints (default 300)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--resume", o.resume,
+                    "Continue the render saved in FILE, to its spp or to a larger --spp; the scene and settings must "
+                    "be those it was started with");
+    cmd->add_option("--samples", o.samples,
+                    "BEGIN:END: render only samples BEGIN to END-1 of every pixel, a part of a split render for "
+                    "`wavetrace merge` (default output: SCENE.BEGIN-END.ckpt)");
+    cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but errors (no progress, no summary)");
     return cmd;
 }
 
 namespace {
-
-std::string with_si_prefix(double value) {
-    std::ostringstream s;
-    s.precision(3);
-    if (value >= 1e9) s << std::fixed << value / 1e9 << " G";
-    else if (value >= 1e6) s << std::fixed << value / 1e6 << " M";
-    else if (value >= 1e3) s << std::fixed << value / 1e3 << " k";
-    else if (value == double(uint64_t(value))) s << uint64_t(value);
-    else s << std::fixed << value;
-    return s.str();
-}
 
 // Physical memory, to refuse an image whose film cannot fit before trying to allocate it.
 double physical_memory_bytes() {
     const long pages = sysconf(_SC_PHYS_PAGES);
     const long page_size = sysconf(_SC_PAGE_SIZE);
     return pages > 0 && page_size > 0 ? double(pages) * double(page_size) : 0.0;
-}
-
-DebugSample parse_debug_sample(const std::string& text, int width, int height) {
-    DebugSample d;
-    char comma1 = 0, comma2 = 0;
-    long long x = -1, y = -1, s = -1;
-    std::istringstream in(text);
-    in >> x >> comma1 >> y >> comma2 >> s;
-    if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof())
-        throw std::runtime_error("--debug-sample: expected X,Y,S (three integers), got '" + text + "'");
-    if (x < 0 || x >= width || y < 0 || y >= height)
-        throw std::runtime_error("--debug-sample: pixel (" + std::to_string(x) + "," + std::to_string(y) +
-                                 ") is outside the " + std::to_string(width) + "x" + std::to_string(height) + " image");
-    if (s < 0 || s > 0xffffffffLL) throw std::runtime_error("--debug-sample: sample index out of range: " + std::to_string(s));
-    d.x = int(x), d.y = int(y), d.sample = uint32_t(s);
-    return d;
-}
-
-void print_vec(std::ostream& out, const glm::vec3& v) { out << "(" << v.x << ", " << v.y << ", " << v.z << ")"; }
-
-int replay_sample(const Scene& scene, const RenderOptions& options, const DebugSample& d) {
-    RayCounts counts;
-    std::vector<PathVertexRecord> vertices;
-    const uint32_t pixel = uint32_t(d.y) * uint32_t(scene.settings.width) + uint32_t(d.x);
-    // The same hits either way; a big scene is replayed through a BVH so it takes no longer than a render would.
-    Bvh bvh;
-    BvhView tree;
-    const int width = intersect_kernels(options.isa.value_or(best_supported_isa())).width;
-    const bool use_bvh = resolve_accel(options.accel, scene.primitive_count(), width) == Accel::bvh;
-    if (use_bvh) bvh = build_bvh(scene, options.bvh), tree = bvh_view(bvh);
-    const glm::vec3 radiance = trace_reference_path(scene, pixel, d.sample, counts, &vertices, use_bvh ? &tree : nullptr);
-    std::cout.precision(9);
-    std::cout << "pixel (" << d.x << "," << d.y << ") sample " << d.sample << " seed " << scene.settings.seed << "\n";
-    for (const PathVertexRecord& v : vertices) {
-        std::cout << "  bounce " << v.bounce << ": t=" << v.hit.t << " prim " << v.hit.prim << " material '"
-                  << scene.materials[v.material].name << "' at ";
-        print_vec(std::cout, v.position);
-        std::cout << " normal ";
-        print_vec(std::cout, v.normal);
-        if (v.shading_normal != v.normal) {
-            std::cout << " shading normal ";
-            print_vec(std::cout, v.shading_normal);
-        }
-        std::cout << "\n    throughput ";
-        print_vec(std::cout, v.throughput);
-        std::cout << " emission added ";
-        print_vec(std::cout, v.emission_added);
-        std::cout << " shadow rays " << v.shadow_rays_unoccluded << "/" << v.shadow_rays_traced << " unblocked, direct added ";
-        print_vec(std::cout, v.direct_added);
-        std::cout << "\n";
-    }
-    std::cout << "radiance ";
-    print_vec(std::cout, radiance);
-    std::cout << "\n";
-    return 0;
 }
 
 void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
@@ -149,6 +113,12 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.clamp_indirect) s.estimator.clamp_indirect = *o.clamp_indirect;
 }
 
+std::string default_output(const RenderCommandOptions& o, SampleRange part) {
+    const std::string stem = std::filesystem::path(o.scene_path).stem().string();
+    if (!o.samples) return stem + ".png";
+    return stem + "." + std::to_string(part.begin) + "-" + std::to_string(part.end) + ".ckpt";
+}
+
 }  // namespace
 
 int run_render_command(RenderCommandOptions& o) {
@@ -157,17 +127,37 @@ int run_render_command(RenderCommandOptions& o) {
         if (!o.quiet)
             for (const std::string& note : description.notes) std::cerr << "wavetrace: note: " << note << "\n";
         apply_overrides(o, description.settings);
+        if (o.resume && o.samples) throw std::runtime_error("--resume continues the range it holds: no --samples with it");
+        // A partial render's samples; otherwise [0, spp).
+        const SampleRange part = o.samples ? parse_sample_range(*o.samples) : SampleRange{};
+        const uint64_t scene_hash = scene_content_hash(description);
+        std::optional<Checkpoint> resumed;
+        if (o.resume) {
+            RenderSettings& s = description.settings;
+            resumed = checkpoint_to_resume(*o.resume, scene_hash, s, {s.width, s.height, {}});
+            const CheckpointHeader& h = resumed->header;
+            if (!o.spp && h.first_sample == 0) s.spp = int(h.target_sample);
+            if (o.spp && uint32_t(*o.spp) < h.next_sample)
+                throw std::runtime_error("--spp " + std::to_string(*o.spp) + ": " + *o.resume + " holds samples up to " +
+                                         std::to_string(h.next_sample) + " already");
+            if (!o.checkpoint) o.checkpoint = *o.resume;
+        }
         const RenderSettings settings = description.settings;
         const Scene scene = build_scene(description);
         description = SceneDescription();  // a big mesh's vertices and indices are in the scene now
-
 
         o.render.accel = *parse_accel(o.accel_name);  // CLI checked membership
         if (o.debug_sample)
             return replay_sample(scene, o.render, parse_debug_sample(*o.debug_sample, settings.width, settings.height));
 
-        if (o.outputs.empty()) o.outputs.push_back(std::filesystem::path(o.scene_path).stem().string() + ".png");
-        for (const std::string& out : o.outputs) check_output_path(out);
+        if (o.outputs.empty()) o.outputs.push_back(default_output(o, part));
+#if WAVETRACE_MPI
+        if (MpiJob::active()) check_mpi_render_options(o);
+#endif
+        for (const std::string& out : o.outputs)
+            if (is_checkpoint_path(out)) check_checkpoint_path(out, "-o");
+            else check_output_path(out);
+        if (o.checkpoint) check_checkpoint_path(*o.checkpoint, "--checkpoint");
         const double film_bytes = Film::bytes_needed(settings.width, settings.height);
         const double memory = physical_memory_bytes();
         if (memory > 0.0 && film_bytes > 0.5 * memory) {
@@ -182,43 +172,69 @@ int run_render_command(RenderCommandOptions& o) {
             o.render.isa = parse_isa(o.isa_name);
             if (!cpu_supports(*o.render.isa)) throw std::runtime_error("--isa " + o.isa_name + ": this CPU does not support it");
         }
-        Film film(settings.width, settings.height);
-        const RenderResult result = render(scene, o.render, film);
-        const std::vector<float> rgb = film.resolve();
-        for (const std::string& out : o.outputs) write_image(out, settings.width, settings.height, rgb);
+        RenderSession session(scene, o.render);
+#if WAVETRACE_MPI
+        if (MpiJob::active())
+            return run_render_on_mpi_ranks(o, session, scene, checkpoint_header_for(scene_hash, settings, {0, 0}, 0));
+#endif
+        // The samples [first, next) the film holds, and [next, target) still to render.
+        const uint32_t first = resumed ? resumed->header.first_sample : part.begin;
+        const uint32_t next = resumed ? resumed->header.next_sample : first;
+        const uint32_t target = o.samples ? part.end
+                                : o.spp || !resumed ? uint32_t(settings.spp)
+                                                    : resumed->header.target_sample;
+        Film film = resumed ? std::move(resumed->film) : Film(settings.width, settings.height);
+        resumed.reset();
+        const auto header_at = [&](uint32_t next_sample) {
+            return checkpoint_header_for(scene_hash, settings, {first, next_sample}, target);
+        };
 
+        ProgressiveOptions passes;
+        passes.samples = {next, target};
+        passes.film_first_sample = first;
+        passes.time_limit = o.time_limit.value_or(0.0);
+        // Short enough that Ctrl-C, --write-every, checkpoints and the time limit are answered promptly.
+        passes.pass_seconds = std::min({2.0, o.write_every.value_or(2.0), o.checkpoint ? o.checkpoint_every : 2.0});
+        passes.stop = &interrupt_requested();
+        ProgressDisplay progress(progress_style_for_stderr(o.quiet), film.pixel_total(), next - first, target - first,
+                                 passes.time_limit);
+        RenderPassHooks hooks(progress);
+        if (o.write_every)
+            hooks.every(*o.write_every, [&](const Film& current, const PassReport& report) {
+                try {
+                    write_render_outputs(o.outputs, current, header_at(report.pass_samples.end));
+                } catch (const std::exception& e) {
+                    // The previous images stay in place; the render goes on and tries again later.
+                    std::cerr << "wavetrace: warning: " << e.what() << " (rendering continues)\n";
+                }
+            });
+        if (o.checkpoint)
+            hooks.every(o.checkpoint_every, [&](const Film& current, const PassReport& report) {
+                try_write_checkpoint(*o.checkpoint, header_at(report.pass_samples.end), current, !o.quiet);
+            });
+        install_interrupt_handlers();
+        const ProgressiveResult passes_done = render_progressive(session, film, passes, &hooks);
+        progress.finish();
+
+        // The checkpoint first, so a render whose image cannot be written can still be resumed;
+        // the images even when the checkpoint cannot be, so the samples are not all lost.
+        const CheckpointHeader final_header = header_at(passes_done.end_sample);
+        const bool checkpointed = !o.checkpoint || try_write_checkpoint(*o.checkpoint, final_header, film, false);
+        write_render_outputs(o.outputs, film, final_header);
+        if (!checkpointed) throw std::runtime_error(*o.checkpoint + ": the final checkpoint could not be written (the images were)");
         if (!o.quiet) {
-            const RayCounts& c = result.counts;
-            const double secs = result.seconds;
-            std::cout << "wavetrace: " << o.scene_path << " " << settings.width << "x" << settings.height << ", "
-                      << settings.spp << " spp, " << settings.shadow_rays << " shadow rays, " << o.integrator_name
-                      << " integrator" << (o.render.integrator == Integrator::wavefront ? std::string(" (") + isa_name(result.isa) + " kernels)" : "")
-                      << ", " << result.threads << " thread" << (result.threads > 1 ? "s" : "") << "\n";
-            std::cout.precision(3);
-            std::cout << "  wall time        " << std::fixed << secs << " s\n";
-            std::cout << "  samples/s        " << with_si_prefix(double(c.samples) / secs) << "\n";
-            std::cout << "  rays/s           " << with_si_prefix(double(c.total_rays()) / secs) << " (camera "
-                      << with_si_prefix(double(c.camera_rays)) << ", bounce " << with_si_prefix(double(c.bounce_rays))
-                      << ", shadow " << with_si_prefix(double(c.shadow_rays)) << " rays)\n";
-            std::cout << "  NaN/Inf samples  " << c.nonfinite_samples << "\n";
-            if (result.accel == Accel::bvh) {
-                const BvhStats& b = result.bvh;
-                const double prims = double(std::max<std::size_t>(1, b.primitive_count));
-                std::cout << "  BVH              " << o.render.bvh.node_width << "-wide, " << with_si_prefix(double(b.primitive_count))
-                          << " primitives, " << with_si_prefix(double(b.node_count)) << " nodes, "
-                          << with_si_prefix(double(b.leaf_count)) << " leaves, SAH cost " << b.sah_cost << ", built in "
-                          << b.build_seconds << " s\n";
-                std::cout << "  BVH memory       " << with_si_prefix(double(b.node_bytes + b.primitive_bytes)) << "B ("
-                          << double(b.node_bytes) / prims << " B/primitive nodes, " << double(b.primitive_bytes) / prims
-                          << " B/primitive leaf data)\n";
-            } else {
-                std::cout << "  acceleration     none (flat list of " << scene.primitive_count() << " primitives)\n";
-            }
-            for (const std::string& out : o.outputs) std::cout << "  wrote            " << out << "\n";
+            std::vector<std::string> written = o.outputs;
+            if (o.checkpoint) written.push_back(*o.checkpoint);
+            RenderSummary summary{o.scene_path, o.integrator_name, &scene, &o.render, session.result(), passes_done,
+                                  passes_done.end_sample - first, written};
+            print_render_summary(std::cout, summary);
         }
-        return 0;
+        return passes_done.reason == StopReason::interrupted ? exit_interrupted : 0;
     } catch (const std::exception& e) {
         std::cerr << "wavetrace: error: " << e.what() << "\n";
+#if WAVETRACE_MPI
+        if (MpiJob::active()) MpiJob::abort(1);  // the other ranks would wait for this one forever
+#endif
         return 1;
     }
 }

@@ -11,11 +11,6 @@
 
 namespace wt {
 
-struct DebugSample {
-    int x = 0, y = 0;
-    uint32_t sample = 0;
-};
-
 struct RenderCommandOptions {
     std::string scene_path;
     std::vector<std::string> outputs;
@@ -30,6 +25,9 @@ struct RenderCommandOptions {
     std::string isa_name = "auto";
     std::string accel_name = "auto";
     std::optional<std::string> debug_sample;  // "X,Y,S": replay one sample instead of rendering
+    std::optional<double> time_limit, write_every;  // seconds
+    std::optional<std::string> checkpoint, resume, samples;  // samples: "BEGIN:END", a partial render
+    double checkpoint_every = 300.0;                         // seconds
     bool quiet = false;
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // The switches that change the Monte Carlo estimator itself, not the geometry: where the random
 // numbers come from, how direct light is sampled, and whether bright indirect samples are
-// clamped. Each default is today's estimator, bit for bit; the alternatives trade time, variance
+// clamped. The defaults are the classic estimator; the alternatives trade time, variance
 // and (the clamp) bias, measured in the README ("Estimator options").
 
 #include <cstdint>
@@ -12,7 +12,7 @@ namespace wt {
 
 enum class SamplerKind : uint8_t {
     independent,  // every dimension a hash of (seed, pixel, sample, bounce, dimension)
-    stratified,   // the pixel position jittered in a k x k grid, the other dimensions independent
+    stratified,   // the pixel position from a per-pixel scrambled (0, 2)-sequence, the other dimensions independent
     sobol,        // Owen-scrambled Sobol' points, padded per pair of dimensions (Burley 2020)
 };
 

@@ -20,10 +20,6 @@
 
 namespace wt {
 
-inline SampleCounts sample_counts(const Scene& scene) {
-    return {uint32_t(scene.settings.spp), uint32_t(scene.settings.shadow_rays)};
-}
-
 template <typename E>
 inline PathSeed path_seed(const Scene& scene, uint32_t pixel, uint32_t sample) {
     return {E::Sampler::key_of(scene.settings.seed, pixel, sample), sample};
@@ -34,8 +30,8 @@ inline PathSeed path_seed(const Scene& scene, uint32_t pixel, uint32_t sample) {
 template <typename E>
 inline Ray camera_ray(const Scene& scene, uint32_t pixel, const PathSeed& path) {
     const uint32_t width = uint32_t(scene.settings.width);
-    const typename E::Sampler random(path, 0, sample_counts(scene));
-    const glm::vec2 offset = random.pixel_offset(path.sample, uint32_t(scene.settings.spp));
+    const typename E::Sampler random(path, 0, uint32_t(scene.settings.shadow_rays));
+    const glm::vec2 offset = random.pixel_offset(scene.settings.seed, pixel, path.sample);
     return scene.camera.generate_ray(float(pixel % width) + offset.x, float(pixel / width) + offset.y);
 }
 
@@ -117,7 +113,7 @@ public:
           position_(surface.position),
           throughput_(throughput),
           bsdf_(m, at.shading_normal, -d),
-          random_(path, bounce, SampleCounts{uint32_t(scene.settings.spp), count}),
+          random_(path, bounce, count),
           count_(count),
           count_float_(float(count)),
           bsdf_competes_(E::mis && int(bounce) + 1 < scene.settings.max_bounces),
@@ -221,7 +217,7 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
                                                      const glm::vec3& d, const glm::vec3& throughput, const PathSeed& path,
                                                      uint32_t bounce) {
     if (int(bounce) + 1 >= scene.settings.max_bounces) return std::nullopt;
-    const typename E::Sampler random(path, bounce, sample_counts(scene));
+    const typename E::Sampler random(path, bounce, uint32_t(scene.settings.shadow_rays));
     const UniformPair direction = random.pair(dim::bsdf_u);
     const UniformPair choice_and_roulette = random.pair(dim::bsdf_choice);
     const FresnelModel fresnel = scene.settings.accuracy.fresnel;

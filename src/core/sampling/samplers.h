@@ -20,11 +20,6 @@
 
 namespace wt {
 
-// How many samples each sequence holds: a pixel's samples, and each vertex's light samples.
-struct SampleCounts {
-    uint32_t spp, shadow_rays;
-};
-
 // What one camera path's samplers are made from: a key hashed from (seed, pixel, sample) or,
 // for Sobol', from (seed, pixel), once when the path starts; and the sample's index in its pixel.
 struct PathSeed {
@@ -37,26 +32,37 @@ class IndependentSampler : public VertexRandom {
 public:
     static constexpr bool kCheapDraws = true;  // one hash: never worth a test to skip a draw
     static uint64_t key_of(uint64_t seed, uint32_t pixel, uint32_t sample) { return path_key(seed, pixel, sample); }
-    IndependentSampler(const PathSeed& path, uint32_t bounce, const SampleCounts&) : VertexRandom(path.key, bounce) {}
+    IndependentSampler(const PathSeed& path, uint32_t bounce, uint32_t /*shadow_rays*/) : VertexRandom(path.key, bounce) {}
 
-    glm::vec2 pixel_offset(uint32_t /*sample*/, uint32_t /*spp*/) const {
+    glm::vec2 pixel_offset(uint64_t /*seed*/, uint32_t /*pixel*/, uint32_t /*sample*/) const {
         const UniformPair p = pair(dim::camera_x);
         return {p.first, p.second};
     }
 };
 
-// The renderer's original sampler: the pixel position stratified (stratified_pixel_offset), the
-// other dimensions independent.
+// The pixel position stratified, the other dimensions independent (VertexRandom). Sample s of
+// a pixel sits at point s of an Owen-scrambled (0, 2)-sequence (sobol.h) scrambled for that
+// pixel: every prefix of 2^m samples has one sample in each of the 2^m elementary intervals of
+// the pixel, and every sample is uniform over the pixel on its own. So the position depends on
+// the sample's index only, never on how many samples the render takes, and a render stopped
+// early (a time limit, Ctrl-C, any pass boundary) is an unbiased image of the samples it has;
+// resuming with more spp gives the same samples an uninterrupted render of that spp takes.
+// (A k x k jittered grid sized from the spp, visited in scanline order, has neither property:
+// the first quarter of its samples all lie in the top quarter of the pixel.)
 class StratifiedSampler : public VertexRandom {
 public:
-    static constexpr bool kCheapDraws = true;
+    static constexpr bool kCheapDraws = true;  // hashes but for the pixel position
     static uint64_t key_of(uint64_t seed, uint32_t pixel, uint32_t sample) { return path_key(seed, pixel, sample); }
-    StratifiedSampler(const PathSeed& path, uint32_t bounce, const SampleCounts&) : VertexRandom(path.key, bounce) {}
+    StratifiedSampler(const PathSeed& path, uint32_t bounce, uint32_t /*shadow_rays*/) : VertexRandom(path.key, bounce) {}
 
-    glm::vec2 pixel_offset(uint32_t sample, uint32_t spp) const {
-        const UniformPair jitter = pair(dim::camera_x);
-        return stratified_pixel_offset(sample, spp, jitter.first, jitter.second);
+    glm::vec2 pixel_offset(uint64_t seed, uint32_t pixel, uint32_t sample) const {
+        const uint64_t h = mix64(mix64(seed ^ kStrataSalt) + uint64_t(pixel) * kGoldenGamma);
+        const SobolPoint p = owen_scrambled_sobol_unshuffled(sample, {0u, uint32_t(h), uint32_t(h >> 32)});
+        return {p.x, p.y};
     }
+
+private:
+    static constexpr uint64_t kStrataSalt = 0x57a7a5a17ULL;  // keeps these seeds apart from the other keys
 };
 
 // Owen-scrambled Sobol' points (sobol.h), padded: each pair of dimensions of each bounce is its
@@ -71,27 +77,24 @@ public:
     static uint64_t key_of(uint64_t seed, uint32_t pixel, uint32_t /*sample*/) {
         return mix64(mix64(seed ^ kSobolSalt) + uint64_t(pixel) * kGoldenGamma);
     }
-    SobolSampler(const PathSeed& path, uint32_t bounce, const SampleCounts& counts)
-        : base_(path.key + (uint64_t(bounce) << 32) * kGoldenGamma),
-          sample_(path.sample),
-          shadow_rays_(counts.shadow_rays),
-          index_mask_(index_mask(counts.spp * counts.shadow_rays)) {}
+    SobolSampler(const PathSeed& path, uint32_t bounce, uint32_t shadow_rays)
+        : base_(path.key + (uint64_t(bounce) << 32) * kGoldenGamma), sample_(path.sample), shadow_rays_(shadow_rays) {}
 
-    glm::vec2 pixel_offset(uint32_t /*sample*/, uint32_t /*spp*/) const {
+    glm::vec2 pixel_offset(uint64_t /*seed*/, uint32_t /*pixel*/, uint32_t /*sample*/) const {
         const UniformPair p = pair(dim::camera_x);
         return {p.first, p.second};
     }
 
     UniformPair pair(uint32_t dimension) const {
         const Pad pad = pad_of(dimension);
-        const SobolPoint p = owen_scrambled_sobol(pad.index, seeds(pad.number, true), index_mask_);
+        const SobolPoint p = owen_scrambled_sobol(pad.index, seeds(pad.number, true));
         return {p.x, p.y};
     }
     float operator()(uint32_t dimension) const {
         if (dimension & 1u) return pair(dimension - 1).second;
         const Pad pad = pad_of(dimension);
         const SobolSeeds s = seeds(pad.number, false);
-        return owen_scrambled_sobol_x(shuffled_index(pad.index, s, index_mask_), s);
+        return owen_scrambled_sobol_x(shuffled_index(pad.index, s), s);
     }
 
 private:
@@ -112,13 +115,8 @@ private:
         return {uint32_t(h), uint32_t(h >> 32), with_y ? uint32_t(mix64(h)) : 0u};
     }
 
-    // The bits every index of the render fits in (see shuffled_index).
-    static uint32_t index_mask(uint32_t index_count) {
-        return index_count <= 1 ? 0u : 0xffffffffu >> __builtin_clz(index_count - 1);
-    }
-
     uint64_t base_;
-    uint32_t sample_, shadow_rays_, index_mask_;
+    uint32_t sample_, shadow_rays_;
 };
 
 }  // namespace wt
