@@ -148,7 +148,7 @@ public:
     [[gnu::always_inline]] bool sample(uint32_t index, ShadowRay& s) const {
         const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
         const UniformPair point = random_.pair(base + dim::light_u);
-        const LightSample light = scene_.lights.sample(scene_.triangles, random_(base + dim::light_choice), point.first, point.second);
+        const LightSample light = scene_.lights.sample(scene_.triangles, light_choice(base), point.first, point.second);
         const glm::vec3& n = at_.normal;
         const glm::vec3 to_light = light.position - position_;
         const float dist2 = glm::dot(to_light, to_light);
@@ -183,6 +183,12 @@ public:
     }
 
 private:
+    // With one emitter the choice is not read; a sampler whose draws are not cheap skips it.
+    float light_choice(uint32_t base) const {
+        if constexpr (E::Sampler::kCheapDraws) return random_(base + dim::light_choice);
+        return scene_.lights.size() > 1 ? random_(base + dim::light_choice) : 0.0f;
+    }
+
     const Scene& scene_;
     LightSamplingPoint at_;
     glm::vec3 position_;  // the shading point, before the offset

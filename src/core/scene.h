@@ -52,9 +52,9 @@ struct SurfacePoint {
     bool smooth;
 };
 
-// Always inlined: g++'s choice to inline it into the shade loop hangs on the rest of the
-// translation unit, and with the loops that record AOVs beside it (kernels/wavefront) it chose
-// a call, which cost the perf gate's render 0.8 to 2.3 % of its instructions.
+// Always inlined: g++'s choice to inline it into a shade loop hangs on the rest of the
+// translation unit, and beside other instantiations of the loop (one per estimator, and the
+// loops that record AOVs) it chose a call, which cost the loop several percent.
 [[gnu::always_inline]] inline SurfacePoint surface_at(const Scene& scene, const Ray& ray, const Hit& hit) {
     SurfacePoint s;
     const uint32_t triangle_count = uint32_t(scene.triangles.size());

@@ -3,6 +3,7 @@
 // path vertex from the path's seed and the bounce, and gives the vertex's random numbers by the
 // dimensions of rng.h's `dim` namespace: pair(d) for dimensions d and d + 1 (d even) and
 // operator()(d) for one. At the camera, pixel_offset() places the sample in its pixel.
+// kCheapDraws says whether a draw whose value will not be read is worth a test to skip.
 //
 // Every value is a pure function of (seed, pixel, sample, bounce, dimension), for all three, so
 // any sample replays alone and images do not depend on threads or batching. The integrators
@@ -29,6 +30,7 @@ struct PathSeed {
 // Every dimension a hash (VertexRandom), the pixel position too.
 class IndependentSampler : public VertexRandom {
 public:
+    static constexpr bool kCheapDraws = true;  // one hash: never worth a test to skip a draw
     static uint64_t key_of(uint64_t seed, uint32_t pixel, uint32_t sample) { return path_key(seed, pixel, sample); }
     IndependentSampler(const PathSeed& path, uint32_t bounce, uint32_t /*shadow_rays*/) : VertexRandom(path.key, bounce) {}
 
@@ -49,6 +51,7 @@ public:
 // the first quarter of its samples all lie in the top quarter of the pixel.)
 class StratifiedSampler : public VertexRandom {
 public:
+    static constexpr bool kCheapDraws = true;  // hashes but for the pixel position
     static uint64_t key_of(uint64_t seed, uint32_t pixel, uint32_t sample) { return path_key(seed, pixel, sample); }
     StratifiedSampler(const PathSeed& path, uint32_t bounce, uint32_t /*shadow_rays*/) : VertexRandom(path.key, bounce) {}
 
@@ -70,6 +73,7 @@ private:
 // so all the pixel's light samples at that bounce are stratified together.
 class SobolSampler {
 public:
+    static constexpr bool kCheapDraws = false;  // a point costs ten hashes: skip the ones not read
     static uint64_t key_of(uint64_t seed, uint32_t pixel, uint32_t /*sample*/) {
         return mix64(mix64(seed ^ kSobolSalt) + uint64_t(pixel) * kGoldenGamma);
     }
