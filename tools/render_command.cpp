@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/film/film.h"
+#include "error_report.h"
 #include "core/film/image_output.h"
 #include "core/scene.h"
 #include "core/scene_file/scene_loader.h"
@@ -49,6 +50,7 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
     cmd->add_option("--debug-sample", o.debug_sample,
                     "X,Y,S: trace only sample S of pixel (X,Y) with the reference integrator and print every vertex");
+    add_reference_error_options(*cmd, o.error);
     cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
     return cmd;
 }
@@ -173,10 +175,14 @@ int run_render_command(RenderCommandOptions& o) {
             o.render.isa = parse_isa(o.isa_name);
             if (!cpu_supports(*o.render.isa)) throw std::runtime_error("--isa " + o.isa_name + ": this CPU does not support it");
         }
+        ReferenceErrorLog error_log(o.error, settings.width, settings.height);
         Film film(settings.width, settings.height);
         const RenderResult result = render(scene, o.render, film);
         const std::vector<float> rgb = film.resolve();
         for (const std::string& out : o.outputs) write_image(out, settings.width, settings.height, rgb);
+        const std::optional<ErrorMetrics> error =
+            error_log.active() ? std::optional(error_log.record(result.seconds, settings.spp, film)) : std::nullopt;
+        error_log.finish();
 
         if (!o.quiet) {
             const RayCounts& c = result.counts;
@@ -205,7 +211,9 @@ int run_render_command(RenderCommandOptions& o) {
             } else {
                 std::cout << "  acceleration     none (flat list of " << scene.primitive_count() << " primitives)\n";
             }
+            if (error) std::cout << "  error            " << error_summary(*error) << " (against " << *o.error.reference_path << ")\n";
             for (const std::string& out : o.outputs) std::cout << "  wrote            " << out << "\n";
+            if (o.error.csv_path) std::cout << "  wrote            " << *o.error.csv_path << "\n";
         }
         return 0;
     } catch (const std::exception& e) {

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "kernels/renderer.h"
+#include "reference_error.h"
 
 namespace wt {
 
@@ -28,6 +29,7 @@ struct RenderCommandOptions {
     std::string isa_name = "auto";
     std::string accel_name = "auto";
     std::optional<std::string> debug_sample;  // "X,Y,S": replay one sample instead of rendering
+    ReferenceErrorOptions error;  // --reference, --error-csv
     bool quiet = false;
 };
 

@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "compare_command.h"
 #include "render_command.h"
 
 int main(int argc, char** argv) {
@@ -9,11 +10,14 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     wt::RenderCommandOptions render_options;
     CLI::App* render = wt::add_render_command(app, render_options);
+    const std::vector<wt::Subcommand> subcommands = {wt::compare_subcommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
     if (render->parsed()) return wt::run_render_command(render_options);
+    for (const wt::Subcommand& s : subcommands)
+        if (s.app->parsed()) return s.run();
     return 1;
 }
