@@ -7,7 +7,7 @@ JOBS ?= $(shell nproc)
 SCENE ?= scenes/hexroom.json
 RENDER_DIR ?= renders
 
-.PHONY: render render-mesh test test-long bench bench-deps perf-gate perf-gate-update build deps configure clean
+.PHONY: render render-mesh reference test test-long bench bench-deps perf-gate perf-gate-update build deps configure clean
 
 render: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
@@ -20,6 +20,14 @@ render-mesh: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace bench_data
 	mkdir -p $(RENDER_DIR)
 	$(BUILD_DIR)/bin/wavetrace render $(BUILD_DIR)/bench-data/hexroom_mesh1m.json -o $(RENDER_DIR)/hexroom_mesh1m.png
+
+# The converged reference the error tools compare against (scenes/reference/, committed): the
+# hexroom at 200x200, two independent halves of 4096 spp with every accurate option; it prints
+# its own noise. About 3-6 minutes on 2 cores. See README, "Error against a reference".
+REFERENCE ?= scenes/reference/hexroom_200x200.exr
+reference: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
+	tools/make_reference.sh $(BUILD_DIR)/bin/wavetrace scenes/hexroom.json $(REFERENCE) 4096 200 200
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE long

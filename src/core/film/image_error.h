@@ -17,7 +17,9 @@ struct ErrorMetrics {
     // mean (x - r)^2 / (r^2 + 0.01): squared error relative to the reference's brightness, so dark
     // and bright regions count alike; the 0.01 keeps near-black pixels from dominating the mean.
     double rel_mse = 0.0;
-    double psnr = 0.0;        // 20 log10(1 / rmse): peak 1, as OpenImageIO's compare; +inf when equal
+    // 20 log10(1 / rmse), +inf when equal. Peak 1 always, so PSNR is RMSE in decibels and compares
+    // across images; OpenImageIO's compare takes the largest pixel value as the peak when it exceeds 1.
+    double psnr = 0.0;
     double mean_ratio = 0.0;  // sum x / sum r: 1 for a render that is right on average; NaN if the reference sums to 0
     double max_error = 0.0;   // the worst |x - r|, at pixel (max_x, max_y) in channel max_channel
     int max_x = 0, max_y = 0, max_channel = 0;
