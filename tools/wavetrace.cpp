@@ -4,13 +4,14 @@
 
 #include "compare_command.h"
 #include "render_command.h"
+#include "tradeoff_command.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"wavetrace: a wavefront Monte Carlo path tracer for the CPU"};
     app.require_subcommand(1);
     wt::RenderCommandOptions render_options;
     CLI::App* render = wt::add_render_command(app, render_options);
-    const std::vector<wt::Subcommand> subcommands = {wt::compare_subcommand(app)};
+    const std::vector<wt::Subcommand> subcommands = {wt::compare_subcommand(app), wt::tradeoff_subcommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
