@@ -16,6 +16,7 @@ packages=(
   libgtest-dev                  # tests
   libbenchmark-dev              # benchmarks
   valgrind                      # callgrind, for the instruction-count performance gate
+  python3-matplotlib            # tools/plot_tradeoff.py: the error-against-time plot of `wavetrace tradeoff`
 )
 # Extra packages named on the command line (bench/install-bench-deps.sh: the benchmarks' own).
 packages+=("$@")
