@@ -39,8 +39,62 @@ TEST(Film, NonFiniteSamplesAreRejectedAndNeverReachTheImage) {
 TEST(Film, TenMillionSamplesAccumulateWithoutDrift) {
     Film film(1, 1);
     for (int i = 0; i < 10000000; ++i) film.add_sample(0, glm::vec3(0.1f));
-    // In float the running sum would stall near 2^24 * ulp; double keeps 1e-9 relative error.
-    EXPECT_NEAR(film.pixel_mean(0).x, double(0.1f), 1e-9);
+    // In float the running sum would stall near 2^24 * ulp; the fixed-point sum rounds each
+    // sample to 2^-40 once, an error of at most 2^-41 per sample in the mean.
+    EXPECT_NEAR(film.pixel_mean(0).x, double(0.1f), 0x1p-41);
+}
+
+// The property split renders rely on: the same samples give the same bits in any order and
+// any split into films added later. A double sum passes neither: both sides are asserted.
+TEST(Film, SumsAreExactWhateverTheOrderAndSplit) {
+    std::vector<float> values;
+    uint64_t state = 12345;
+    for (int i = 0; i < 1000; ++i) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        const int exponent = int(state >> 59) - 16;  // magnitudes 2^-16 .. 2^15
+        values.push_back(std::ldexp(float((state >> 20) & 0xffffff) / float(1 << 24), exponent));
+    }
+    Film forward(1, 1), backward(1, 1), first_half(1, 1), second_half(1, 1);
+    double double_forward = 0.0, double_backward = 0.0;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        forward.add_sample(0, glm::vec3(values[i]));
+        backward.add_sample(0, glm::vec3(values[values.size() - 1 - i]));
+        (i < 400 ? first_half : second_half).add_sample(0, glm::vec3(values[i]));
+        double_forward += values[i];
+        double_backward += values[values.size() - 1 - i];
+    }
+    EXPECT_NE(double_forward, double_backward) << "these values were chosen so a double sum depends on the order";
+    EXPECT_TRUE(forward == backward);
+    second_half.add_film(first_half);
+    EXPECT_TRUE(forward == second_half);
+    EXPECT_EQ(forward.pixel_count(0), 1000u);
+}
+
+TEST(Film, ValuesBeyondTheFixedPointRangeAreRefusedAndLeaveNoTrace) {
+    Film film(1, 1, {"depth"});
+    const float depth = 2.0f;
+    EXPECT_TRUE(film.add_sample(0, glm::vec3(1.0f, 2.0f, 3.0f), &depth));
+    const Film before = film;
+    // The square of 2^44 is 2^88, beyond 2^86: refused even though the value itself fits.
+    EXPECT_FALSE(film.add_sample(0, glm::vec3(1.0f, 0x1p44f, 1.0f), &depth));
+    const float huge_depth = 1e30f;
+    EXPECT_FALSE(film.add_sample(0, glm::vec3(1.0f), &huge_depth)) << "an extra channel out of range refuses the sample";
+    EXPECT_TRUE(film == before);
+    EXPECT_TRUE(film.add_sample(0, glm::vec3(0x1p42f), &depth)) << "2^42 and its square are in range";
+    EXPECT_EQ(film.pixel_count(0), 2u);
+    EXPECT_DOUBLE_EQ(film.extra_mean(0, 0), 2.0);
+    EXPECT_DOUBLE_EQ(film.pixel_mean(0).x, (1.0 + 0x1p42) / 2.0);
+}
+
+TEST(Film, AddingFilmsChecksLayoutAndOverflow) {
+    Film a(2, 2), b(2, 2), other_size(2, 1), other_channels(2, 2, {"depth"});
+    EXPECT_THROW(a.add_film(other_size), std::invalid_argument);
+    EXPECT_THROW(a.add_film(other_channels), std::invalid_argument);
+    a.raw_counts()[3] = 0xffffffffu;
+    b.raw_counts()[3] = 1;
+    const Film unchanged = a;
+    EXPECT_THROW(a.add_film(b), std::overflow_error);
+    EXPECT_TRUE(a == unchanged);
 }
 
 }  // namespace

@@ -57,12 +57,12 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
     return radiance;
 }
 
-void render_reference_tile(const Scene& scene, const Tile& tile, Film& film, RayCounts& counts, const BvhView* bvh) {
-    const uint32_t spp = uint32_t(scene.settings.spp);
+void render_reference_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
+                           RayCounts& counts, const BvhView* bvh) {
     for (int y = tile.y0; y < tile.y1; ++y) {
         for (int x = tile.x0; x < tile.x1; ++x) {
             const uint32_t pixel = uint32_t(y) * uint32_t(scene.settings.width) + uint32_t(x);
-            for (uint32_t s = 0; s < spp; ++s) {
+            for (uint32_t s = sample_begin; s < sample_end; ++s) {
                 const glm::vec3 radiance = trace_reference_path(scene, pixel, s, counts, nullptr, bvh);
                 ++counts.samples;
                 if (!film.add_sample(pixel, radiance)) ++counts.nonfinite_samples;

@@ -34,7 +34,8 @@ struct PathVertexRecord {
 glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
                                std::vector<PathVertexRecord>* record = nullptr, const BvhView* bvh = nullptr);
 
-void render_reference_tile(const Scene& scene, const Tile& tile, Film& film, RayCounts& counts,
-                           const BvhView* bvh = nullptr);
+// Samples [sample_begin, sample_end) of every pixel of the tile.
+void render_reference_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
+                           RayCounts& counts, const BvhView* bvh = nullptr);
 
 }  // namespace wt

@@ -2,78 +2,92 @@
 
 #include <algorithm>
 #include <chrono>
-#include <memory>
 #include <stdexcept>
 #include <thread>
-#include <vector>
 
-#include "core/thread_pool.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/reference_integrator.h"
-#include "kernels/wavefront/tiles.h"
 #include "kernels/wavefront/wavefront_renderer.h"
 
 namespace wt {
 
 int default_thread_count() { return std::max(1u, std::thread::hardware_concurrency()); }
 
-RenderResult render(const Scene& scene, const RenderOptions& options, Film& film) {
-    if (film.width() != scene.settings.width || film.height() != scene.settings.height)
-        throw std::invalid_argument("render: film resolution does not match the scene's");
+namespace {
+
+const RenderOptions& checked(const Scene& scene, const RenderOptions& options) {
     if (options.tile_size < 1) throw std::invalid_argument("render: tile size must be at least 1");
     if (options.batch_paths < 1) throw std::invalid_argument("render: batch size must be at least 1");
-
-    const int threads = options.threads > 0 ? options.threads : default_thread_count();
-    const std::vector<Tile> tiles = make_tiles(scene.settings.width, scene.settings.height, options.tile_size);
-    std::vector<RayCounts> counts(static_cast<std::size_t>(threads));
-    // Created by the worker that uses it, on first use, so its pages live near that core.
-    std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces(static_cast<std::size_t>(threads));
-
     if (scene.settings.accuracy.triangles == TriangleTest::watertight && scene.triangles.parallelogram_count > 0)
         throw std::invalid_argument("render: the watertight triangle test cannot render parallelograms; build the scene "
                                     "with the accuracy settings it is rendered with");
+    return options;
+}
 
-    const Isa isa = options.isa.value_or(best_supported_isa());
-    ThreadPool pool(threads);
-    const IntersectKernels& kernels = intersect_kernels(isa, scene.settings.accuracy);
-    const Accel accel = resolve_accel(options.accel, scene.primitive_count(), kernels.width);
-    Bvh bvh;
-    BvhView bvh_tree;
-    if (accel == Accel::bvh) {
-        bvh = build_bvh(scene, options.bvh, &pool);
-        bvh_tree = bvh_view(bvh);
+int thread_count(const RenderOptions& options) { return options.threads > 0 ? options.threads : default_thread_count(); }
+
+}  // namespace
+
+RenderSession::RenderSession(const Scene& scene, const RenderOptions& options)
+    : scene_(scene), options_(checked(scene, options)), threads_(thread_count(options)),
+      isa_(options.isa.value_or(best_supported_isa())),
+      tiles_(make_tiles(scene.settings.width, scene.settings.height, options.tile_size)), pool_(threads_),
+      kernels_(&intersect_kernels(isa_, scene.settings.accuracy)),
+      counts_(std::size_t(threads_)), workspaces_(std::size_t(threads_)) {
+    accel_ = resolve_accel(options.accel, scene.primitive_count(), kernels_->width);
+    if (accel_ == Accel::bvh) {
+        bvh_ = build_bvh(scene, options.bvh, &pool_);
+        bvh_tree_ = bvh_view(bvh_);
     }
-    const BvhView* tree = accel == Accel::bvh ? &bvh_tree : nullptr;
-    const IntersectContext context{scene_view(scene), &kernels, tree};
+}
+
+RenderSession::~RenderSession() = default;
+
+void RenderSession::render_samples(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done) {
+    if (film.width() != scene_.settings.width || film.height() != scene_.settings.height)
+        throw std::invalid_argument("render: film resolution does not match the scene's");
+    if (range.end <= range.begin) return;
+    const BvhView* tree = accel_ == Accel::bvh ? &bvh_tree_ : nullptr;
+    const IntersectContext context{scene_view(scene_), kernels_, tree};
 
     const auto start = std::chrono::steady_clock::now();
-    pool.parallel_for(tiles.size(), [&](std::size_t item, int worker) {
-        const Tile& tile = tiles[item];
-        RayCounts& c = counts[std::size_t(worker)];
-        if (options.integrator == Integrator::reference) {
-            render_reference_tile(scene, tile, film, c, tree);
-            return;
+    pool_.parallel_for(tiles_.size(), [&](std::size_t item, int worker) {
+        const Tile& tile = tiles_[item];
+        RayCounts& c = counts_[std::size_t(worker)];
+        if (options_.integrator == Integrator::reference) {
+            render_reference_tile(scene_, tile, range.begin, range.end, film, c, tree);
+        } else {
+            auto& ws = workspaces_[std::size_t(worker)];
+            if (!ws) {
+                // A batch holds at most batch_paths paths, or one sample of every pixel of a tile larger than that.
+                const std::size_t image_pixels = std::size_t(scene_.settings.width) * std::size_t(scene_.settings.height);
+                const std::size_t tile_pixels =
+                    std::min(image_pixels, std::size_t(options_.tile_size) * std::size_t(options_.tile_size));
+                const std::size_t capacity = std::max(options_.batch_paths, tile_pixels);
+                ws = std::make_unique<WavefrontWorkspace>(capacity, std::size_t(scene_.settings.shadow_rays));
+            }
+            render_wavefront_tile(scene_, context, tile, range.begin, range.end, options_.batch_paths, *ws, film, c);
         }
-        auto& ws = workspaces[std::size_t(worker)];
-        if (!ws) {
-            // A batch holds at most batch_paths paths, or one sample of every pixel of a tile larger than that.
-            const std::size_t image_pixels = std::size_t(scene.settings.width) * std::size_t(scene.settings.height);
-            const std::size_t tile_pixels = std::min(image_pixels, std::size_t(options.tile_size) * std::size_t(options.tile_size));
-            const std::size_t capacity = std::max(options.batch_paths, tile_pixels);
-            ws = std::make_unique<WavefrontWorkspace>(capacity, std::size_t(scene.settings.shadow_rays));
-        }
-        render_wavefront_tile(scene, context, tile, options.batch_paths, *ws, film, c);
+        if (tile_done) tile_done(uint64_t(tile.pixel_count()) * range.size());
     });
-    const auto stop = std::chrono::steady_clock::now();
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
+RenderResult RenderSession::result() const {
     RenderResult result;
-    for (const RayCounts& c : counts) result.counts += c;
-    result.seconds = std::chrono::duration<double>(stop - start).count();
-    result.threads = threads;
-    result.isa = isa;
-    result.accel = accel;
-    result.bvh = bvh.stats();
+    for (const RayCounts& c : counts_) result.counts += c;
+    result.seconds = seconds_;
+    result.threads = threads_;
+    result.isa = isa_;
+    result.accel = accel_;
+    result.bvh = bvh_.stats();
     return result;
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options, Film& film) {
+    RenderSession session(scene, options);
+    session.render_samples(film, {0, uint32_t(scene.settings.spp)});
+    return session.result();
 }
 
 }  // namespace wt

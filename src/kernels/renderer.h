@@ -1,15 +1,26 @@
 #pragma once
 // Entry point: renders a scene into a film with either integrator on a pool of threads.
+// A RenderSession owns what outlives one range of samples (threads, the BVH, the workers'
+// queues), so progressive passes, resumed renders and sample ranges of a split render pay for
+// them once; `render` is a session used for all of the scene's samples.
 
+#include <atomic>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
 #include <optional>
+#include <vector>
 
 #include "core/film/film.h"
 #include "core/scene.h"
+#include "core/thread_pool.h"
 #include "kernels/accel/accel_choice.h"
 #include "kernels/accel/bvh.h"
+#include "kernels/accel/bvh_view.h"
 #include "kernels/isa/intersect_kernels.h"
 #include "kernels/render_stats.h"
+#include "kernels/wavefront/tiles.h"
 
 namespace wt {
 
@@ -27,15 +38,58 @@ struct RenderOptions {
 
 struct RenderResult {
     RayCounts counts;
-    double seconds = 0.0;  // wall time of the rendering itself (no loading, no writing)
+    double seconds = 0.0;  // wall time of the rendering itself (no loading, no BVH build, no writing)
     int threads = 1;
     Isa isa = Isa::scalar;  // kernels the wavefront integrator used
     Accel accel = Accel::brute;  // what `automatic` resolved to
     BvhStats bvh;                // when accel is bvh: the tree's size and build time
 };
 
-// The film must match the scene's resolution. Deterministic: the same scene (including seed)
-// gives a bit-identical film for any thread count, tile size and batch size.
+// Samples [begin, end) of every pixel.
+struct SampleRange {
+    uint32_t begin = 0, end = 0;
+    uint32_t size() const { return end - begin; }
+};
+
+struct WavefrontWorkspace;
+
+class RenderSession {
+public:
+    // Checks the options against the scene and builds the BVH when the render uses one.
+    RenderSession(const Scene& scene, const RenderOptions& options);
+    ~RenderSession();
+    RenderSession(const RenderSession&) = delete;
+    RenderSession& operator=(const RenderSession&) = delete;
+
+    // Adds samples `range` of every pixel to the film (which must match the scene's
+    // resolution). Each pixel receives them in ascending order; since the film's sums are
+    // exact, the film ends the same bits however a render is cut into ranges, for any thread
+    // count, tile size and batch size. `tile_done(samples)`, if given, is called by the worker
+    // that finished a tile with the number of samples it added: from several threads at once.
+    void render_samples(Film& film, SampleRange range, const std::function<void(uint64_t samples)>& tile_done = {});
+
+    // Counts and rendering time of every range so far.
+    RenderResult result() const;
+    const Scene& scene() const { return scene_; }
+
+private:
+    const Scene& scene_;
+    RenderOptions options_;
+    int threads_;
+    Isa isa_;
+    Accel accel_;
+    std::vector<Tile> tiles_;
+    ThreadPool pool_;
+    const IntersectKernels* kernels_;
+    Bvh bvh_;
+    BvhView bvh_tree_;
+    std::vector<RayCounts> counts_;
+    // Created by the worker that uses it, on first use, so its pages live near that core.
+    std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces_;
+    double seconds_ = 0.0;
+};
+
+// All of the scene's samples (settings.spp) in one range.
 RenderResult render(const Scene& scene, const RenderOptions& options, Film& film);
 
 int default_thread_count();

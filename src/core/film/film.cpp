@@ -1,17 +1,36 @@
 #include "core/film/film.h"
 
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
 #include <glm/common.hpp>
 
 namespace wt {
 
-Film::Film(int width, int height)
-    : width_(width), height_(height), sum_(3 * std::size_t(width) * std::size_t(height), 0.0),
-      sum_squares_(sum_.size(), 0.0),
-      count_(std::size_t(width) * std::size_t(height), 0) {}
+Film::Film(int width, int height, std::vector<std::string> extra_channels)
+    : width_(width), height_(height), extra_channels_(std::move(extra_channels)), stride_(6 + extra_channels_.size()),
+      sums_(stride_ * std::size_t(width) * std::size_t(height), FixedPoint(0)),
+      count_(std::size_t(width) * std::size_t(height), 0) {
+    if (extra_channels_.size() > max_extra_channels) throw std::invalid_argument("film: too many extra channels");
+}
+
+bool Film::add_extra(FixedPoint* sums, const float* extra) {
+    // Checked before anything is stored, so a refused sample leaves no trace in any channel.
+    const std::size_t n = extra_channels_.size();
+    FixedPoint updated[max_extra_channels];
+    std::copy(sums, sums + n, updated);
+    for (std::size_t c = 0; c < n; ++c) {
+        FixedPoint v;
+        if (!to_fixed_point(extra ? extra[c] : 0.0f, v) || !add_fixed_point(updated[c], v)) return false;
+    }
+    std::copy(updated, updated + n, sums);
+    return true;
+}
 
 glm::dvec3 Film::pixel_sum(uint32_t pixel) const {
-    const double* s = &sum_[3 * std::size_t(pixel)];
-    return {s[0], s[1], s[2]};
+    const FixedPoint* s = &sums_[std::size_t(pixel) * stride_];
+    return {from_fixed_point(s[0]), from_fixed_point(s[1]), from_fixed_point(s[2])};
 }
 
 glm::dvec3 Film::pixel_mean(uint32_t pixel) const {
@@ -21,21 +40,46 @@ glm::dvec3 Film::pixel_mean(uint32_t pixel) const {
 glm::dvec3 Film::pixel_sample_variance(uint32_t pixel) const {
     const double n = count_[pixel];
     if (n < 2) return glm::dvec3(0.0);
-    const double* q = &sum_squares_[3 * std::size_t(pixel)];
+    const FixedPoint* q = &sums_[std::size_t(pixel) * stride_ + 3];
     const glm::dvec3 mean = pixel_sum(pixel) / n;
-    const glm::dvec3 mean_of_squares(q[0] / n, q[1] / n, q[2] / n);
+    const glm::dvec3 mean_of_squares(from_fixed_point(q[0]) / n, from_fixed_point(q[1]) / n, from_fixed_point(q[2]) / n);
     // max(0, .) because the one-pass formula can round below zero for near-constant pixels.
     return glm::max(glm::dvec3(0.0), (mean_of_squares - mean * mean) * (n / (n - 1)));
 }
 
+double Film::extra_mean(uint32_t pixel, std::size_t channel) const {
+    if (!count_[pixel]) return 0.0;
+    return from_fixed_point(sums_[std::size_t(pixel) * stride_ + 6 + channel]) / double(count_[pixel]);
+}
+
 std::vector<float> Film::resolve() const {
-    std::vector<float> rgb(sum_.size(), 0.0f);
+    std::vector<float> rgb(3 * count_.size(), 0.0f);
     for (std::size_t p = 0; p < count_.size(); ++p) {
         if (count_[p] == 0) continue;
-        const double inv = 1.0 / double(count_[p]);
-        for (int c = 0; c < 3; ++c) rgb[3 * p + c] = float(sum_[3 * p + c] * inv);
+        const glm::dvec3 mean = pixel_mean(uint32_t(p));
+        for (int c = 0; c < 3; ++c) rgb[3 * p + c] = float(mean[c]);
     }
     return rgb;
+}
+
+void Film::add_film(const Film& other) {
+    if (other.width_ != width_ || other.height_ != height_ || other.extra_channels_ != extra_channels_)
+        throw std::invalid_argument("films differ in size or channels");
+    // Checked in full first, so a failed add leaves this film as it was.
+    for (std::size_t p = 0; p < count_.size(); ++p)
+        if (count_[p] > std::numeric_limits<uint32_t>::max() - other.count_[p])
+            throw std::overflow_error("film: a pixel's sample count would overflow");
+    for (std::size_t i = 0; i < sums_.size(); ++i) {
+        FixedPoint s = sums_[i];
+        if (!add_fixed_point(s, other.sums_[i])) throw std::overflow_error("film: a pixel's sum would overflow");
+    }
+    for (std::size_t i = 0; i < sums_.size(); ++i) sums_[i] += other.sums_[i];
+    for (std::size_t p = 0; p < count_.size(); ++p) count_[p] += other.count_[p];
+}
+
+bool Film::operator==(const Film& other) const {
+    return width_ == other.width_ && height_ == other.height_ && extra_channels_ == other.extra_channels_ &&
+           sums_ == other.sums_ && count_ == other.count_;
 }
 
 }  // namespace wt

@@ -1,35 +1,51 @@
 #pragma once
-// Per-pixel sums (and sums of squares, for the per-pixel variance that statistical tests and
-// error estimates need) in double, and sample counts. Each pixel belongs to exactly one tile and each
-// tile to one worker, so adds need no atomics; samples arrive in sample-index order whatever
-// the tiling, which makes the sums bit-identical for any thread count and tile size.
+// Per-pixel sums of the samples' radiance and of its square (for the per-pixel variance that
+// statistical tests, error estimates and the variance AOV need), optional extra channels (AOVs)
+// and sample counts. Sums are exact fixed point (fixed_point.h), so a film is the same bits
+// however its samples were split over passes, processes or partial renders, and two films of
+// disjoint sample ranges add (`add_film`) to exactly the film of both ranges.
+//
+// Each pixel belongs to exactly one tile and each tile to one worker, so adds need no atomics.
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
-#include <glm/vec3.hpp>
 #include <glm/ext/vector_double3.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/film/fixed_point.h"
 
 namespace wt {
 
 class Film {
 public:
-    Film(int width, int height);
+    static constexpr std::size_t max_extra_channels = 16;
+
+    // `extra_channels`: names of per-sample values averaged like the radiance (AOVs), added
+    // with each sample in that order.
+    Film(int width, int height, std::vector<std::string> extra_channels = {});
 
     int width() const { return width_; }
     int height() const { return height_; }
+    std::size_t pixel_total() const { return count_.size(); }
 
-    // Adds one sample. A non-finite sample is dropped and false returned: the caller counts it,
-    // and it never reaches the image.
-    bool add_sample(uint32_t pixel, const glm::vec3& radiance) {
-        if (!std::isfinite(radiance.x) || !std::isfinite(radiance.y) || !std::isfinite(radiance.z)) return false;
-        const std::size_t i = 3 * std::size_t(pixel);
-        double* s = &sum_[i];
-        double* q = &sum_squares_[i];
+    // Adds one sample and, when the film has extra channels, `extra` (one value per channel).
+    // A sample with a non-finite or unrepresentably large value (fixed_point.h) is dropped and
+    // false returned: the caller counts it, and it never reaches the image.
+    bool add_sample(uint32_t pixel, const glm::vec3& radiance, const float* extra = nullptr) {
         const double r = radiance.x, g = radiance.y, b = radiance.z;
-        s[0] += r, s[1] += g, s[2] += b;
-        q[0] += r * r, q[1] += g * g, q[2] += b * b;
+        const double values[6] = {r, g, b, r * r, g * g, b * b};  // squares of floats are exact in double
+        FixedPoint* sums = &sums_[std::size_t(pixel) * stride_];
+        FixedPoint updated[6];
+        for (int c = 0; c < 6; ++c) {
+            FixedPoint v;
+            updated[c] = sums[c];
+            if (!to_fixed_point(values[c], v) || !add_fixed_point(updated[c], v)) return false;
+        }
+        if (stride_ > 6 && !add_extra(sums + 6, extra)) return false;
+        for (int c = 0; c < 6; ++c) sums[c] = updated[c];
         ++count_[pixel];
         return true;
     }
@@ -43,12 +59,37 @@ public:
     // Mean radiance per pixel, RGB interleaved, rows top to bottom. A pixel with no valid sample is black.
     std::vector<float> resolve() const;
 
+    const std::vector<std::string>& extra_channels() const { return extra_channels_; }
+    double extra_mean(uint32_t pixel, std::size_t channel) const;
+
+    // Adds another film of the same size and channels (the samples of a disjoint range):
+    // exact, so the order films are added in does not matter. Throws std::invalid_argument on
+    // a different layout and std::overflow_error if a sum or count would overflow (this film is
+    // then unchanged).
+    void add_film(const Film& other);
+    bool operator==(const Film& other) const;
+    bool operator!=(const Film& other) const { return !(*this == other); }
+
+    // The raw state, for checkpoints: per pixel `channels_per_pixel()` sums (radiance RGB, its
+    // squares RGB, then the extra channels) in units of 2^-40, and the sample counts.
+    std::size_t channels_per_pixel() const { return stride_; }
+    std::vector<FixedPoint>& raw_sums() { return sums_; }
+    const std::vector<FixedPoint>& raw_sums() const { return sums_; }
+    std::vector<uint32_t>& raw_counts() { return count_; }
+    const std::vector<uint32_t>& raw_counts() const { return count_; }
+
     // Memory the film needs, so callers can refuse an image that cannot fit before allocating.
-    static double bytes_needed(int width, int height) { return double(width) * double(height) * (6 * sizeof(double) + sizeof(uint32_t)); }
+    static double bytes_needed(int width, int height, std::size_t extra_channels = 0) {
+        return double(width) * double(height) * (double(6 + extra_channels) * sizeof(FixedPoint) + sizeof(uint32_t));
+    }
 
 private:
+    bool add_extra(FixedPoint* sums, const float* extra);
+
     int width_, height_;
-    std::vector<double> sum_, sum_squares_;
+    std::vector<std::string> extra_channels_;
+    std::size_t stride_;
+    std::vector<FixedPoint> sums_;
     std::vector<uint32_t> count_;
 };
 

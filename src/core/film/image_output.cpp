@@ -10,6 +10,8 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "core/atomic_file.h"
+
 namespace wt {
 
 namespace fs = std::filesystem;
@@ -20,13 +22,6 @@ std::string lowercase_extension(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return ext;
-}
-
-// Keeps the extension last, since OpenImageIO picks the writer from it.
-std::string temporary_path_for(const std::string& path) {
-    const fs::path p(path);
-    const std::string name = "." + p.stem().string() + ".tmp-" + std::to_string(getpid()) + p.extension().string();
-    return (p.parent_path() / name).string();
 }
 
 }  // namespace
@@ -55,10 +50,6 @@ float linear_to_srgb(float linear) {
 
 void write_image(const std::string& path, int width, int height, const std::vector<float>& rgb) {
     const ImageEncoding encoding = encoding_for_path(path);
-    const std::string temporary = temporary_path_for(path);
-    auto out = OIIO::ImageOutput::create(temporary);
-    if (!out) throw ImageError(path + ": cannot create an image writer: " + OIIO::geterror());
-
     const OIIO::TypeDesc type = encoding == ImageEncoding::linear_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
     OIIO::ImageSpec spec(width, height, 3, type);
     std::vector<uint8_t> bytes;
@@ -71,20 +62,15 @@ void write_image(const std::string& path, int width, int height, const std::vect
     } else {
         spec.attribute("oiio:ColorSpace", "Linear");
     }
-
-    const bool ok = out->open(temporary, spec) && out->write_image(type, pixels) && out->close();
-    if (!ok) {
-        const std::string why = out->geterror();
-        out.reset();
-        std::remove(temporary.c_str());
-        throw ImageError(path + ": writing failed: " + why);
-    }
-    out.reset();
-    std::error_code ec;
-    fs::rename(temporary, path, ec);
-    if (ec) {
-        std::remove(temporary.c_str());
-        throw ImageError(path + ": cannot move the finished image into place: " + ec.message());
+    try {
+        write_file_atomically(path, [&](const std::string& temporary) {
+            auto out = OIIO::ImageOutput::create(temporary);
+            if (!out) throw ImageError(path + ": cannot create an image writer: " + OIIO::geterror());
+            if (!(out->open(temporary, spec) && out->write_image(type, pixels) && out->close()))
+                throw ImageError(path + ": writing failed: " + out->geterror());
+        });
+    } catch (const FileWriteError& e) {
+        throw ImageError(e.what());
     }
 }
 

@@ -6,12 +6,12 @@
 
 namespace wt {
 
-void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, std::size_t batch_paths, WavefrontWorkspace& ws,
-                           Film& film, RayCounts& counts) {
-    const uint32_t spp = uint32_t(scene.settings.spp);
-    const uint32_t step = samples_per_batch(tile, batch_paths, scene.settings.spp);
-    for (uint32_t begin = 0; begin < spp; begin += step) {
-        const uint32_t end = std::min(spp, begin + step);
+void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, uint32_t sample_begin,
+                           uint32_t sample_end, std::size_t batch_paths, WavefrontWorkspace& ws, Film& film,
+                           RayCounts& counts) {
+    const uint32_t step = samples_per_batch(tile, batch_paths, sample_end - sample_begin);
+    for (uint32_t begin = sample_begin; begin < sample_end; begin += step) {
+        const uint32_t end = std::min(sample_end, begin + step);
         generate_camera_rays(scene, tile, begin, end, ws.paths, ws.rays);
         counts.camera_rays += ws.rays.count;
         const std::size_t batch_size = ws.rays.count;

@@ -1,5 +1,5 @@
 #pragma once
-// Runs the wavefront stages over one tile: the tile's samples are cut into batches of about
+// Runs the wavefront stages over one tile: a range of the tile's samples are cut into batches of about
 // `batch_paths` camera paths; each batch is generated, then intersect -> shade -> shadow repeat
 // until no ray is left, then its radiance goes to the film in sample order.
 
@@ -12,13 +12,15 @@
 
 namespace wt {
 
-// How many samples of every pixel of the tile one batch holds (at least 1).
-inline uint32_t samples_per_batch(const Tile& tile, std::size_t batch_paths, int spp) {
+// How many samples of every pixel of the tile one batch holds (at least 1), of `samples` wanted.
+inline uint32_t samples_per_batch(const Tile& tile, std::size_t batch_paths, uint32_t samples) {
     const std::size_t per_batch = std::max<std::size_t>(1, batch_paths / std::size_t(tile.pixel_count()));
-    return uint32_t(std::min<std::size_t>(per_batch, std::size_t(spp)));
+    return uint32_t(std::min<std::size_t>(per_batch, samples));
 }
 
-void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, std::size_t batch_paths, WavefrontWorkspace& workspace,
-                           Film& film, RayCounts& counts);
+// Samples [sample_begin, sample_end) of every pixel of the tile.
+void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, uint32_t sample_begin,
+                           uint32_t sample_end, std::size_t batch_paths, WavefrontWorkspace& workspace, Film& film,
+                           RayCounts& counts);
 
 }  // namespace wt

@@ -1,0 +1,74 @@
+#include "core/scene_hash.h"
+
+#include <cstring>
+#include <type_traits>
+
+namespace wt {
+
+namespace {
+
+// Eight bytes at a time, each word mixed with the multiply-xorshift of splitmix64 (Steele et
+// al. 2014): fast enough for a million-triangle mesh, and any changed bit changes the hash.
+class Hasher {
+public:
+    void bytes(const void* data, std::size_t size) {
+        const unsigned char* p = static_cast<const unsigned char*>(data);
+        word(size);
+        for (; size >= 8; p += 8, size -= 8) {
+            uint64_t w;
+            std::memcpy(&w, p, 8);
+            word(w);
+        }
+        uint64_t tail = 0;
+        std::memcpy(&tail, p, size);
+        word(tail);
+    }
+    template <class T>
+    void value(const T& v) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        bytes(&v, sizeof v);
+    }
+    template <class T>
+    void array(const std::vector<T>& v) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        bytes(v.data(), v.size() * sizeof(T));
+    }
+    void word(uint64_t w) {
+        uint64_t z = state_ ^ (w + 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        state_ = z ^ (z >> 31);
+    }
+    uint64_t result() const { return state_; }
+
+private:
+    uint64_t state_ = 0x77617665747261ceull;  // "wavetra..."
+};
+
+}  // namespace
+
+uint64_t scene_content_hash(const SceneDescription& d) {
+    Hasher h;
+    h.value(d.camera.eye), h.value(d.camera.look_at), h.value(d.camera.up), h.value(d.camera.fov_degrees);
+    h.word(d.materials.size());
+    for (const Material& m : d.materials) {
+        h.bytes(m.name.data(), m.name.size());  // names show in --debug-sample output
+        h.value(m.type), h.value(m.albedo), h.value(m.sigma), h.value(m.reflectance), h.value(m.ior), h.value(m.emission);
+    }
+    h.word(d.meshes.size());
+    for (const TriangleMesh& mesh : d.meshes) {
+        h.array(mesh.vertices), h.array(mesh.triangles), h.array(mesh.normals);
+        h.value(mesh.material), h.value(mesh.parallelogram);
+    }
+    h.array(d.spheres);
+    return h.result();
+}
+
+std::string hash_to_hex(uint64_t hash) {
+    static const char digits[] = "0123456789abcdef";
+    std::string s(16, '0');
+    for (int i = 15; i >= 0; --i, hash >>= 4) s[std::size_t(i)] = digits[hash & 15];
+    return s;
+}
+
+}  // namespace wt
