@@ -9,12 +9,12 @@
 #include <sstream>
 
 #include "core/film/film.h"
-#include "error_report.h"
 #include "core/film/image_output.h"
 #include "core/scene.h"
 #include "core/scene_file/scene_loader.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/reference_integrator.h"
+#include "error_report.h"
 
 namespace wt {
 
@@ -175,13 +175,13 @@ int run_render_command(RenderCommandOptions& o) {
             o.render.isa = parse_isa(o.isa_name);
             if (!cpu_supports(*o.render.isa)) throw std::runtime_error("--isa " + o.isa_name + ": this CPU does not support it");
         }
-        ReferenceErrorLog error_log(o.error, settings.width, settings.height);
+        ReferenceErrorLog error_log(o.error, settings.width, settings.height, o.quiet ? nullptr : &std::cout);
         Film film(settings.width, settings.height);
-        const RenderResult result = render(scene, o.render, film);
+        const RenderResult result =
+            error_log.active() ? render_measuring_error(scene, o.render, film, error_log) : render(scene, o.render, film);
         const std::vector<float> rgb = film.resolve();
         for (const std::string& out : o.outputs) write_image(out, settings.width, settings.height, rgb);
-        const std::optional<ErrorMetrics> error =
-            error_log.active() ? std::optional(error_log.record(result.seconds, settings.spp, film)) : std::nullopt;
+        const std::optional<ErrorMetrics> error = error_log.last();
         error_log.finish();
 
         if (!o.quiet) {

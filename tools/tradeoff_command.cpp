@@ -7,7 +7,7 @@
 #include <optional>
 #include <sstream>
 
-#include "atomic_text_file.h"
+#include "core/atomic_file.h"
 #include "core/film/image_input.h"
 #include "core/scene_file/scene_loader.h"
 #include "tradeoff_fit.h"
@@ -135,7 +135,7 @@ int run(TradeoffOptions& o) {
             for (const Knob& k : tradeoff_knobs()) knobs.push_back(&k);
         for (const std::string& name : o.knobs) knobs.push_back(&tradeoff_knob(name));
         for (const auto& path : {o.csv_path, o.fits_csv_path})
-            if (path) check_text_output_path(*path);
+            if (path) check_output_directory(*path);
 
         SceneDescription description = load_scene_file(o.scene_path);
         if (o.width) description.settings.width = *o.width;
