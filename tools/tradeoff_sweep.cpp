@@ -23,32 +23,36 @@ std::vector<Measurement> run_sweep(SceneDescription& description, const std::vec
                                    const SweepPlan& plan, const RgbImage& reference,
                                    const std::function<void(const Measurement&)>& report) {
     const RenderSettings scene_settings = description.settings;
-    std::vector<Measurement> measurements;
-    for (std::size_t i = 0; i < configurations.size(); ++i) {
-        description.settings = configurations[i].settings;
-        Scene scene = build_scene(description);
-        description.settings = scene_settings;
-        for (int spp : plan.spp) {
-            scene.settings.spp = spp;
-            std::vector<double> seconds;
-            RgbImage image{scene.settings.width, scene.settings.height, {}};
-            for (int r = 0; r < plan.repeats; ++r) {
+    const std::size_t levels = plan.spp.size();
+    std::vector<Measurement> measurements(configurations.size() * levels);
+    std::vector<std::vector<double>> seconds(measurements.size());
+    // Round after round over every configuration, not one configuration's repeats in a row: a
+    // shared machine's load drifts over minutes, and interleaving spreads the drift over all.
+    for (int round = 0; round < plan.repeats; ++round)
+        for (std::size_t i = 0; i < configurations.size(); ++i) {
+            description.settings = configurations[i].settings;
+            Scene scene = build_scene(description);
+            description.settings = scene_settings;
+            for (std::size_t level = 0; level < levels; ++level) {
+                scene.settings.spp = plan.spp[level];
                 Film film(scene.settings.width, scene.settings.height);
-                seconds.push_back(render(scene, plan.render, film).seconds);
-                if (r == 0) image.rgb = film.resolve();  // every repeat renders the same bits
+                const std::size_t k = i * levels + level;
+                seconds[k].push_back(render(scene, plan.render, film).seconds);
+                Measurement& m = measurements[k];
+                if (round == 0) {  // every round renders the same bits (same seed)
+                    m.configuration = i;
+                    m.spp = plan.spp[level];
+                    m.error = image_error({film.width(), film.height(), film.resolve()}, reference).overall;
+                }
+                if (round + 1 < plan.repeats) continue;
+                std::vector<double> sorted = seconds[k];
+                std::sort(sorted.begin(), sorted.end());
+                m.seconds = sorted[sorted.size() / 2];
+                m.seconds_min = sorted.front();
+                m.seconds_max = sorted.back();
+                report(m);
             }
-            std::sort(seconds.begin(), seconds.end());
-            Measurement m;
-            m.configuration = i;
-            m.spp = spp;
-            m.seconds = seconds[seconds.size() / 2];
-            m.seconds_min = seconds.front();
-            m.seconds_max = seconds.back();
-            m.error = image_error(image, reference).overall;
-            measurements.push_back(m);
-            report(m);
         }
-    }
     return measurements;
 }
 

@@ -35,12 +35,13 @@ struct Measurement {
 
 struct SweepPlan {
     std::vector<int> spp;  // ascending
-    int repeats = 3;
+    int repeats = 3;  // rounds over all configurations; the median time is kept
     RenderOptions render;
 };
 
 // `description` is rebuilt into a scene per configuration (the accuracy options decide how the
-// scene is built); its settings are left as they were. `report` is told of each measurement.
+// scene is built); its settings are left as they were. `report` is told of each measurement once
+// its last repeat is done. Measurements are in configuration order, spp ascending within each.
 std::vector<Measurement> run_sweep(SceneDescription& description, const std::vector<Configuration>& configurations,
                                    const SweepPlan& plan, const RgbImage& reference,
                                    const std::function<void(const Measurement&)>& report);
