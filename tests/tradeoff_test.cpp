@@ -13,44 +13,44 @@
 namespace wt {
 namespace {
 
-std::vector<TimedError> model(double floor, double variance_seconds) {
-    std::vector<TimedError> points;
-    for (double t : {0.5, 2.0, 8.0, 32.0}) points.push_back({t, floor + variance_seconds / t});
+std::vector<SampledError> model(double floor, double variance) {
+    std::vector<SampledError> points;
+    for (double spp : {4.0, 16.0, 64.0, 256.0}) points.push_back({spp, floor + variance / spp});
     return points;
 }
 
-TEST(ErrorFit, UnbiasedEstimatorFallsAsTheInverseSquareRootOfTime) {
-    const ErrorFit fit = fit_error_against_time(model(0.0, 0.01));
+TEST(ErrorFit, UnbiasedEstimatorFallsAsTheInverseSquareRootOfSpp) {
+    const ErrorFit fit = fit_error_against_spp(model(0.0, 0.5));
     EXPECT_NEAR(fit.slope, -0.5, 1e-12);
-    EXPECT_NEAR(fit.c, 0.1, 1e-12);  // RMSE = sqrt(0.01 / t)
+    EXPECT_NEAR(fit.c, std::sqrt(0.5), 1e-12);  // RMSE = sqrt(0.5 / spp)
     EXPECT_NEAR(fit.floor, 0.0, 1e-15);
-    EXPECT_NEAR(fit.variance_seconds, 0.01, 1e-14);
-    EXPECT_NEAR(seconds_to_reach(fit, 0.01), 100.0, 1e-9);
+    EXPECT_NEAR(fit.variance, 0.5, 1e-12);
+    EXPECT_NEAR(spp_to_reach(fit, 0.05), 200.0, 1e-9);
 }
 
 TEST(ErrorFit, BiasedEstimatorShowsItsFloor) {
-    const ErrorFit fit = fit_error_against_time(model(1e-3, 0.02));
+    const ErrorFit fit = fit_error_against_spp(model(1e-3, 0.5));
     EXPECT_NEAR(fit.floor, 1e-3, 1e-12);
-    EXPECT_NEAR(fit.variance_seconds, 0.02, 1e-12);
+    EXPECT_NEAR(fit.variance, 0.5, 1e-10);
     EXPECT_GT(fit.slope, -0.5);  // flattening towards the floor
-    EXPECT_NEAR(seconds_to_reach(fit, 0.05), 0.02 / (0.0025 - 0.001), 1e-9);
-    EXPECT_EQ(seconds_to_reach(fit, 0.03), std::numeric_limits<double>::infinity());  // 0.03^2 < floor
+    EXPECT_NEAR(spp_to_reach(fit, 0.05), 0.5 / (0.0025 - 0.001), 1e-6);
+    EXPECT_EQ(spp_to_reach(fit, 0.03), std::numeric_limits<double>::infinity());  // 0.03^2 < floor
     // The same floor is not invented for the unbiased one, nor a negative one kept.
-    const ErrorFit noisy = fit_error_against_time({{1.0, 0.0100}, {4.0, 0.0024}, {16.0, 0.0006}});
+    const ErrorFit noisy = fit_error_against_spp({{1.0, 0.0100}, {4.0, 0.0024}, {16.0, 0.0006}});
     EXPECT_EQ(noisy.floor, 0.0);
-    EXPECT_GT(noisy.variance_seconds, 0.0);
+    EXPECT_GT(noisy.variance, 0.0);
 }
 
-TEST(ErrorFit, ErrorThatDoesNotFallHasNoTimeToTarget) {
-    const ErrorFit fit = fit_error_against_time({{1.0, 0.01}, {4.0, 0.02}});
+TEST(ErrorFit, ErrorThatDoesNotFallHasNoSppToTarget) {
+    const ErrorFit fit = fit_error_against_spp({{1.0, 0.01}, {4.0, 0.02}});
     EXPECT_GT(fit.slope, 0.0);
-    EXPECT_TRUE(std::isnan(seconds_to_reach(fit, 0.2)));  // above the fitted floor, but the variance term is negative
+    EXPECT_TRUE(std::isnan(spp_to_reach(fit, 0.2)));  // above the fitted floor, but the variance term is negative
 }
 
 TEST(ErrorFit, RefusesTooFewPoints) {
-    EXPECT_THROW(fit_error_against_time({{1.0, 0.01}}), std::invalid_argument);
-    EXPECT_THROW(fit_error_against_time({{1.0, 0.01}, {1.0, 0.02}}), std::invalid_argument);
-    EXPECT_THROW(fit_error_against_time({{1.0, 0.0}, {2.0, 0.02}}), std::invalid_argument);
+    EXPECT_THROW(fit_error_against_spp({{1.0, 0.01}}), std::invalid_argument);
+    EXPECT_THROW(fit_error_against_spp({{1.0, 0.01}, {1.0, 0.02}}), std::invalid_argument);
+    EXPECT_THROW(fit_error_against_spp({{1.0, 0.0}, {2.0, 0.02}}), std::invalid_argument);
 }
 
 TEST(ParetoFront, KeepsOnlyUndominatedPoints) {

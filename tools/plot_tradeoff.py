@@ -48,7 +48,8 @@ def main():
         ax.plot(t, rmse, marker="o", markersize=3.5, linewidth=2.2 if base else 1.0, color=colour, label=name)
         fit = next((f for f in fits if f["configuration"] == name), None)
         if fit and fit["can_bias"] == "1" and float(fit["floor_mse"]) > 0.0:
-            floor, v = float(fit["floor_mse"]), float(fit["variance_seconds"])
+            # MSE = floor + variance / spp, and spp = t / seconds_per_spp
+            floor, v = float(fit["floor_mse"]), float(fit["variance"]) * float(fit["seconds_per_spp"])
             ts = [t[0] * (10 * t_max / t[0]) ** (k / 40) for k in range(41)]
             ax.plot(ts, [math.sqrt(floor + v / x) for x in ts], linestyle=":", linewidth=1.0, color=colour)
 

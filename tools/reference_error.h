@@ -13,8 +13,8 @@
 #include "core/film/film.h"
 #include "core/film/image_error.h"
 #include "core/film/rgb_image.h"
-#include "kernels/progressive_render.h"
 #include "kernels/renderer.h"
+#include "render_passes.h"
 
 namespace wt {
 
@@ -24,44 +24,36 @@ struct ReferenceErrorOptions {
 
 void add_reference_error_options(CLI::App& render_command, ReferenceErrorOptions& options);
 
-class ReferenceErrorLog : public PassObserver {
+class ReferenceErrorLog {
 public:
     // Reads and checks everything before rendering: the reference exists, is an image of the
     // render's size, and the CSV's directory is writable; --error-csv needs --reference.
-    // Throws naming the file. Inactive (records nothing) without --reference. Each pass's
-    // error is printed to `progress` when it is given.
-    ReferenceErrorLog(const ReferenceErrorOptions& options, int width, int height, std::ostream* progress);
+    // Throws naming the file. Inactive (does nothing) without --reference.
+    ReferenceErrorLog(const ReferenceErrorOptions& options, int width, int height);
 
     bool active() const { return !reference_.rgb.empty(); }
 
-    // The film's mean so far against the reference, remembered as one CSV row.
-    ErrorMetrics record(double seconds, int spp, const Film& film);
+    // Measures the error at every pass boundary but the last, printing a line per pass to
+    // `progress` if given. Its seconds are the session's rendering time, so neither the
+    // measurements nor anything else done between passes count.
+    void attach(RenderPassHooks& hooks, const RenderSession& session, std::ostream* progress);
 
-    // At a pass boundary: records the pass, its seconds those of rendering only (the time the
-    // error measurements took is taken out).
-    bool pass_done(const Film& film, const PassReport& report) override;
+    // The final film: records its row, writes the CSV (whole or not at all) and prints the error
+    // line of the summary to `summary` if given.
+    void finish(double seconds, uint32_t spp, const Film& film, std::ostream* summary);
 
-    // The last error recorded, if any.
-    std::optional<ErrorMetrics> last() const;
-
-    // Writes the CSV (if asked for), whole or not at all.
-    void finish() const;
+    // The film's mean against the reference, remembered as one CSV row.
+    ErrorMetrics record(double seconds, uint32_t spp, const Film& film);
 
 private:
     struct Row {
         double seconds;
-        int spp;
+        uint32_t spp;
         ErrorMetrics error;
     };
     ReferenceErrorOptions options_;
     RgbImage reference_;
-    std::ostream* progress_;
     std::vector<Row> rows_;
-    double measuring_seconds_ = 0.0;
 };
-
-// All of the scene's samples in progressive passes (kernels/progressive_render.h), the error
-// taken at each pass boundary: the same film, bit for bit, as render() makes.
-RenderResult render_measuring_error(const Scene& scene, const RenderOptions& options, Film& film, ReferenceErrorLog& log);
 
 }  // namespace wt

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -12,9 +13,13 @@
 #include "core/film/image_output.h"
 #include "core/scene.h"
 #include "core/scene_file/scene_loader.h"
+#include "debug_sample.h"
+#include "interrupt.h"
 #include "kernels/isa/intersect_dispatch.h"
-#include "kernels/reference_integrator.h"
-#include "error_report.h"
+#include "kernels/progressive_render.h"
+#include "progress_display.h"
+#include "render_passes.h"
+#include "render_summary.h"
 
 namespace wt {
 
@@ -50,84 +55,24 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
     cmd->add_option("--debug-sample", o.debug_sample,
                     "X,Y,S: trace only sample S of pixel (X,Y) with the reference integrator and print every vertex");
+    cmd->add_option("--time-limit", o.time_limit,
+                    "Stop at the last pass boundary within SECONDS of rendering and write the image it has "
+                    "(the spp it reached is printed and in the image's metadata)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--write-every", o.write_every, "Also write the outputs every SECONDS, at pass boundaries")
+        ->check(CLI::PositiveNumber);
     add_reference_error_options(*cmd, o.error);
-    cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
+    cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but errors (no progress, no summary)");
     return cmd;
 }
 
 namespace {
-
-std::string with_si_prefix(double value) {
-    std::ostringstream s;
-    s.precision(3);
-    if (value >= 1e9) s << std::fixed << value / 1e9 << " G";
-    else if (value >= 1e6) s << std::fixed << value / 1e6 << " M";
-    else if (value >= 1e3) s << std::fixed << value / 1e3 << " k";
-    else if (value == double(uint64_t(value))) s << uint64_t(value);
-    else s << std::fixed << value;
-    return s.str();
-}
 
 // Physical memory, to refuse an image whose film cannot fit before trying to allocate it.
 double physical_memory_bytes() {
     const long pages = sysconf(_SC_PHYS_PAGES);
     const long page_size = sysconf(_SC_PAGE_SIZE);
     return pages > 0 && page_size > 0 ? double(pages) * double(page_size) : 0.0;
-}
-
-DebugSample parse_debug_sample(const std::string& text, int width, int height) {
-    DebugSample d;
-    char comma1 = 0, comma2 = 0;
-    long long x = -1, y = -1, s = -1;
-    std::istringstream in(text);
-    in >> x >> comma1 >> y >> comma2 >> s;
-    if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof())
-        throw std::runtime_error("--debug-sample: expected X,Y,S (three integers), got '" + text + "'");
-    if (x < 0 || x >= width || y < 0 || y >= height)
-        throw std::runtime_error("--debug-sample: pixel (" + std::to_string(x) + "," + std::to_string(y) +
-                                 ") is outside the " + std::to_string(width) + "x" + std::to_string(height) + " image");
-    if (s < 0 || s > 0xffffffffLL) throw std::runtime_error("--debug-sample: sample index out of range: " + std::to_string(s));
-    d.x = int(x), d.y = int(y), d.sample = uint32_t(s);
-    return d;
-}
-
-void print_vec(std::ostream& out, const glm::vec3& v) { out << "(" << v.x << ", " << v.y << ", " << v.z << ")"; }
-
-int replay_sample(const Scene& scene, const RenderOptions& options, const DebugSample& d) {
-    RayCounts counts;
-    std::vector<PathVertexRecord> vertices;
-    const uint32_t pixel = uint32_t(d.y) * uint32_t(scene.settings.width) + uint32_t(d.x);
-    // The same hits either way; a big scene is replayed through a BVH so it takes no longer than a render would.
-    Bvh bvh;
-    BvhView tree;
-    const int width = intersect_kernels(options.isa.value_or(best_supported_isa())).width;
-    const bool use_bvh = resolve_accel(options.accel, scene.primitive_count(), width) == Accel::bvh;
-    if (use_bvh) bvh = build_bvh(scene, options.bvh), tree = bvh_view(bvh);
-    const glm::vec3 radiance = trace_reference_path(scene, pixel, d.sample, counts, &vertices, use_bvh ? &tree : nullptr);
-    std::cout.precision(9);
-    std::cout << "pixel (" << d.x << "," << d.y << ") sample " << d.sample << " seed " << scene.settings.seed << "\n";
-    for (const PathVertexRecord& v : vertices) {
-        std::cout << "  bounce " << v.bounce << ": t=" << v.hit.t << " prim " << v.hit.prim << " material '"
-                  << scene.materials[v.material].name << "' at ";
-        print_vec(std::cout, v.position);
-        std::cout << " normal ";
-        print_vec(std::cout, v.normal);
-        if (v.shading_normal != v.normal) {
-            std::cout << " shading normal ";
-            print_vec(std::cout, v.shading_normal);
-        }
-        std::cout << "\n    throughput ";
-        print_vec(std::cout, v.throughput);
-        std::cout << " emission added ";
-        print_vec(std::cout, v.emission_added);
-        std::cout << " shadow rays " << v.shadow_rays_unoccluded << "/" << v.shadow_rays_traced << " unblocked, direct added ";
-        print_vec(std::cout, v.direct_added);
-        std::cout << "\n";
-    }
-    std::cout << "radiance ";
-    print_vec(std::cout, radiance);
-    std::cout << "\n";
-    return 0;
 }
 
 void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
@@ -142,6 +87,12 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.fresnel) s.accuracy.fresnel = *parse_fresnel_model(*o.fresnel);
 }
 
+// Resolves the film and writes every output; a failure is an ImageError naming the file.
+void write_outputs(const std::vector<std::string>& outputs, const Film& film) {
+    const std::vector<float> rgb = film.resolve();
+    for (const std::string& out : outputs) write_image(out, film.width(), film.height(), rgb);
+}
+
 }  // namespace
 
 int run_render_command(RenderCommandOptions& o) {
@@ -153,7 +104,6 @@ int run_render_command(RenderCommandOptions& o) {
         const RenderSettings settings = description.settings;
         const Scene scene = build_scene(description);
         description = SceneDescription();  // a big mesh's vertices and indices are in the scene now
-
 
         o.render.accel = *parse_accel(o.accel_name);  // CLI checked membership
         if (o.debug_sample)
@@ -175,47 +125,41 @@ int run_render_command(RenderCommandOptions& o) {
             o.render.isa = parse_isa(o.isa_name);
             if (!cpu_supports(*o.render.isa)) throw std::runtime_error("--isa " + o.isa_name + ": this CPU does not support it");
         }
-        ReferenceErrorLog error_log(o.error, settings.width, settings.height, o.quiet ? nullptr : &std::cout);
+        ReferenceErrorLog error_log(o.error, settings.width, settings.height);
+        RenderSession session(scene, o.render);
         Film film(settings.width, settings.height);
-        const RenderResult result =
-            error_log.active() ? render_measuring_error(scene, o.render, film, error_log) : render(scene, o.render, film);
-        const std::vector<float> rgb = film.resolve();
-        for (const std::string& out : o.outputs) write_image(out, settings.width, settings.height, rgb);
-        const std::optional<ErrorMetrics> error = error_log.last();
-        error_log.finish();
 
+        ProgressiveOptions passes;
+        passes.samples = {0, uint32_t(settings.spp)};
+        passes.time_limit = o.time_limit.value_or(0.0);
+        // Short enough that Ctrl-C, --write-every and the time limit are answered promptly.
+        passes.pass_seconds = std::min(2.0, o.write_every.value_or(2.0));
+        passes.stop = &interrupt_requested();
+        ProgressDisplay progress(progress_style_for_stderr(o.quiet), film.pixel_total(), 0, uint32_t(settings.spp),
+                                 passes.time_limit);
+        RenderPassHooks hooks(progress);
+        if (o.write_every)
+            hooks.every(*o.write_every, [&](const Film& current, const PassReport&) {
+                try {
+                    write_outputs(o.outputs, current);
+                } catch (const std::exception& e) {
+                    // The previous images stay in place; the render goes on and tries again later.
+                    std::cerr << "wavetrace: warning: " << e.what() << " (rendering continues)\n";
+                }
+            });
+        error_log.attach(hooks, session, o.quiet ? nullptr : &std::cerr);
+        install_interrupt_handlers();
+        const ProgressiveResult passes_done = render_progressive(session, film, passes, &hooks);
+        progress.finish();
+
+        write_outputs(o.outputs, film);
         if (!o.quiet) {
-            const RayCounts& c = result.counts;
-            const double secs = result.seconds;
-            std::cout << "wavetrace: " << o.scene_path << " " << settings.width << "x" << settings.height << ", "
-                      << settings.spp << " spp, " << settings.shadow_rays << " shadow rays, " << o.integrator_name
-                      << " integrator" << (o.render.integrator == Integrator::wavefront ? std::string(" (") + isa_name(result.isa) + " kernels)" : "")
-                      << ", " << result.threads << " thread" << (result.threads > 1 ? "s" : "") << "\n";
-            std::cout.precision(3);
-            std::cout << "  wall time        " << std::fixed << secs << " s\n";
-            std::cout << "  samples/s        " << with_si_prefix(double(c.samples) / secs) << "\n";
-            std::cout << "  rays/s           " << with_si_prefix(double(c.total_rays()) / secs) << " (camera "
-                      << with_si_prefix(double(c.camera_rays)) << ", bounce " << with_si_prefix(double(c.bounce_rays))
-                      << ", shadow " << with_si_prefix(double(c.shadow_rays)) << " rays)\n";
-            std::cout << "  NaN/Inf samples  " << c.nonfinite_samples << "\n";
-            if (result.accel == Accel::bvh) {
-                const BvhStats& b = result.bvh;
-                const double prims = double(std::max<std::size_t>(1, b.primitive_count));
-                std::cout << "  BVH              " << o.render.bvh.node_width << "-wide, " << with_si_prefix(double(b.primitive_count))
-                          << " primitives, " << with_si_prefix(double(b.node_count)) << " nodes, "
-                          << with_si_prefix(double(b.leaf_count)) << " leaves, SAH cost " << b.sah_cost << ", built in "
-                          << b.build_seconds << " s\n";
-                std::cout << "  BVH memory       " << with_si_prefix(double(b.node_bytes + b.primitive_bytes)) << "B ("
-                          << double(b.node_bytes) / prims << " B/primitive nodes, " << double(b.primitive_bytes) / prims
-                          << " B/primitive leaf data)\n";
-            } else {
-                std::cout << "  acceleration     none (flat list of " << scene.primitive_count() << " primitives)\n";
-            }
-            if (error) std::cout << "  error            " << error_summary(*error) << " (against " << *o.error.reference_path << ")\n";
-            for (const std::string& out : o.outputs) std::cout << "  wrote            " << out << "\n";
-            if (o.error.csv_path) std::cout << "  wrote            " << *o.error.csv_path << "\n";
+            RenderSummary summary{o.scene_path, o.integrator_name, &scene, &o.render, session.result(), passes_done,
+                                  passes_done.end_sample, o.outputs};
+            print_render_summary(std::cout, summary);
         }
-        return 0;
+        error_log.finish(session.result().seconds, passes_done.end_sample, film, o.quiet ? nullptr : &std::cout);
+        return passes_done.reason == StopReason::interrupted ? exit_interrupted : 0;
     } catch (const std::exception& e) {
         std::cerr << "wavetrace: error: " << e.what() << "\n";
         return 1;

@@ -12,11 +12,6 @@
 
 namespace wt {
 
-struct DebugSample {
-    int x = 0, y = 0;
-    uint32_t sample = 0;
-};
-
 struct RenderCommandOptions {
     std::string scene_path;
     std::vector<std::string> outputs;
@@ -29,7 +24,8 @@ struct RenderCommandOptions {
     std::string isa_name = "auto";
     std::string accel_name = "auto";
     std::optional<std::string> debug_sample;  // "X,Y,S": replay one sample instead of rendering
-    ReferenceErrorOptions error;  // --reference, --error-csv
+    std::optional<double> time_limit, write_every;  // seconds
+    ReferenceErrorOptions error;                    // --reference, --error-csv
     bool quiet = false;
 };
 

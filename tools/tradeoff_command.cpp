@@ -78,25 +78,37 @@ std::string seconds_text(double s) {
 
 struct ConfigurationSummary {
     ErrorFit fit;
+    double seconds_per_spp = 0.0;       // total median time over total spp: the largest spp dominates
     const Measurement* last = nullptr;  // at the largest spp
     bool on_front = false;              // one of its measurements is on the Pareto front
+
+    double spp_to(double target_rmse) const { return spp_to_reach(fit, target_rmse); }
+    double seconds_to(double target_rmse) const { return spp_to(target_rmse) * seconds_per_spp; }
 };
+
+std::string count_text(double spp) {
+    if (std::isinf(spp)) return "never";
+    if (std::isnan(spp)) return "n/a";
+    return std::to_string(std::llround(std::ceil(spp)));
+}
 
 void print_table(std::ostream& out, const std::vector<Configuration>& configurations,
                  const std::vector<ConfigurationSummary>& summaries, double target_rmse) {
-    out << std::left << std::setw(34) << "configuration" << std::right << std::setw(7) << "spp" << std::setw(10) << "time(s)"
-        << std::setw(11) << "RMSE" << std::setw(11) << "relMSE" << std::setw(12) << "efficiency" << std::setw(8) << "slope"
-        << std::setw(12) << "floor_RMSE" << std::setw(14) << ("t(RMSE<" + seconds_text(target_rmse) + ")") << "  pareto\n";
+    const std::string target = "<" + seconds_text(target_rmse) + ")";
+    out << std::left << std::setw(30) << "configuration" << std::right << std::setw(6) << "spp" << std::setw(9) << "time(s)"
+        << std::setw(10) << "RMSE" << std::setw(10) << "relMSE" << std::setw(11) << "efficiency" << std::setw(8) << "slope"
+        << std::setw(11) << "floor_RMSE" << std::setw(14) << ("spp(RMSE" + target) << std::setw(12) << ("t(RMSE" + target)
+        << "  pareto\n";
     for (std::size_t i = 0; i < configurations.size(); ++i) {
         const ConfigurationSummary& s = summaries[i];
         const Measurement& m = *s.last;
         const double efficiency = 1.0 / (m.error.rel_mse * m.seconds);
-        out << std::left << std::setw(34) << configurations[i].name << std::right << std::setw(7) << m.spp << std::fixed
-            << std::setprecision(3) << std::setw(10) << m.seconds << std::defaultfloat << std::setprecision(4)
-            << std::setw(11) << m.error.rmse << std::setw(11) << m.error.rel_mse << std::setw(12) << efficiency
-            << std::setprecision(3) << std::setw(8) << s.fit.slope << std::setprecision(3) << std::setw(12)
-            << std::sqrt(s.fit.floor) << std::setw(14) << seconds_text(seconds_to_reach(s.fit, target_rmse)) << "  "
-            << (s.on_front ? "yes" : "") << "\n";
+        out << std::left << std::setw(30) << configurations[i].name << std::right << std::setw(6) << m.spp << std::fixed
+            << std::setprecision(3) << std::setw(9) << m.seconds << std::defaultfloat << std::setprecision(4)
+            << std::setw(10) << m.error.rmse << std::setw(10) << m.error.rel_mse << std::setw(11) << efficiency
+            << std::setprecision(3) << std::setw(8) << s.fit.slope << std::setw(11) << std::sqrt(s.fit.floor)
+            << std::setw(14) << count_text(s.spp_to(target_rmse)) << std::setw(12) << seconds_text(s.seconds_to(target_rmse))
+            << "  " << (s.on_front ? "yes" : "") << "\n";
     }
 }
 
@@ -119,11 +131,12 @@ std::string fits_csv(const std::vector<Configuration>& configurations, const std
                      double target_rmse) {
     std::ostringstream csv;
     csv.precision(9);
-    csv << "configuration,can_bias,slope,c,floor_mse,variance_seconds,target_rmse,seconds_to_target\n";
+    csv << "configuration,can_bias,slope,c,floor_mse,variance,seconds_per_spp,target_rmse,spp_to_target,seconds_to_target\n";
     for (std::size_t i = 0; i < configurations.size(); ++i) {
-        const ErrorFit& f = summaries[i].fit;
-        csv << configurations[i].name << "," << configurations[i].can_bias << "," << f.slope << "," << f.c << "," << f.floor
-            << "," << f.variance_seconds << "," << target_rmse << "," << seconds_to_reach(f, target_rmse) << "\n";
+        const ConfigurationSummary& s = summaries[i];
+        csv << configurations[i].name << "," << configurations[i].can_bias << "," << s.fit.slope << "," << s.fit.c << ","
+            << s.fit.floor << "," << s.fit.variance << "," << s.seconds_per_spp << "," << target_rmse << ","
+            << s.spp_to(target_rmse) << "," << s.seconds_to(target_rmse) << "\n";
     }
     return csv.str();
 }
@@ -186,14 +199,18 @@ int run(TradeoffOptions& o) {
         const std::vector<bool> front = pareto_front(points);
         std::vector<ConfigurationSummary> summaries(configurations.size());
         for (std::size_t i = 0; i < configurations.size(); ++i) {
-            std::vector<TimedError> own;
+            std::vector<SampledError> own;
+            double seconds = 0.0, spp = 0.0;
             for (std::size_t j = 0; j < measurements.size(); ++j) {
-                if (measurements[j].configuration != i) continue;
-                own.push_back(points[j]);
-                summaries[i].last = &measurements[j];
+                const Measurement& m = measurements[j];
+                if (m.configuration != i) continue;
+                own.push_back({double(m.spp), points[j].mse});
+                seconds += m.seconds, spp += m.spp;
+                summaries[i].last = &m;
                 summaries[i].on_front = summaries[i].on_front || front[j];
             }
-            summaries[i].fit = fit_error_against_time(own);
+            summaries[i].fit = fit_error_against_spp(own);
+            summaries[i].seconds_per_spp = seconds / spp;
         }
 
         print_table(std::cout, configurations, summaries, o.target_rmse);

@@ -6,46 +6,46 @@
 
 namespace wt {
 
-ErrorFit fit_error_against_time(const std::vector<TimedError>& points) {
-    if (points.size() < 2) throw std::invalid_argument("fit_error_against_time: needs at least two points");
+ErrorFit fit_error_against_spp(const std::vector<SampledError>& points) {
+    if (points.size() < 2) throw std::invalid_argument("fit_error_against_spp: needs at least two points");
     ErrorFit fit;
     fit.points = points.size();
 
     // Log-log line.
     double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-    for (const TimedError& p : points) {
-        if (!(p.seconds > 0.0) || !(p.mse > 0.0)) throw std::invalid_argument("fit_error_against_time: times and errors must be positive");
-        const double x = std::log(p.seconds), y = 0.5 * std::log(p.mse);
+    for (const SampledError& p : points) {
+        if (!(p.spp > 0.0) || !(p.mse > 0.0)) throw std::invalid_argument("fit_error_against_spp: spp and errors must be positive");
+        const double x = std::log(p.spp), y = 0.5 * std::log(p.mse);
         sx += x, sy += y, sxx += x * x, sxy += x * y;
     }
     const double n = double(points.size());
     const double spread = sxx - sx * sx / n;
-    if (!(spread > 0.0)) throw std::invalid_argument("fit_error_against_time: needs two different times");
+    if (!(spread > 0.0)) throw std::invalid_argument("fit_error_against_spp: needs two different spp");
     fit.slope = (sxy - sx * sy / n) / spread;
     fit.c = std::exp((sy - fit.slope * sx) / n);
 
-    // floor + v / t, least squares on (MSE_i - model) / MSE_i: a weighted linear fit in (1, 1/t)
-    // with weights 1 / MSE_i^2, solved by its 2x2 normal equations.
+    // floor + v / spp, least squares on (MSE_i - model) / MSE_i: a weighted linear fit in
+    // (1, 1/spp) with weights 1 / MSE_i^2, solved by its 2x2 normal equations.
     double w = 0.0, wx = 0.0, wxx = 0.0, wy = 0.0, wxy = 0.0;
-    for (const TimedError& p : points) {
-        const double weight = 1.0 / (p.mse * p.mse), x = 1.0 / p.seconds;
+    for (const SampledError& p : points) {
+        const double weight = 1.0 / (p.mse * p.mse), x = 1.0 / p.spp;
         w += weight, wx += weight * x, wxx += weight * x * x, wy += weight * p.mse, wxy += weight * x * p.mse;
     }
     const double det = w * wxx - wx * wx;
     fit.floor = (wy * wxx - wx * wxy) / det;
-    fit.variance_seconds = (w * wxy - wx * wy) / det;
-    if (fit.floor < 0.0) {  // no measurable floor: the pure 1/t model
+    fit.variance = (w * wxy - wx * wy) / det;
+    if (fit.floor < 0.0) {  // no measurable floor: the pure 1/spp model
         fit.floor = 0.0;
-        fit.variance_seconds = wxy / wxx;
+        fit.variance = wxy / wxx;
     }
     return fit;
 }
 
-double seconds_to_reach(const ErrorFit& fit, double target_rmse) {
+double spp_to_reach(const ErrorFit& fit, double target_rmse) {
     const double target = target_rmse * target_rmse;
     if (target <= fit.floor) return std::numeric_limits<double>::infinity();
-    if (!(fit.variance_seconds > 0.0)) return std::numeric_limits<double>::quiet_NaN();  // error not falling with time
-    return fit.variance_seconds / (target - fit.floor);
+    if (!(fit.variance > 0.0)) return std::numeric_limits<double>::quiet_NaN();  // error not falling with spp
+    return fit.variance / (target - fit.floor);
 }
 
 std::vector<bool> pareto_front(const std::vector<TimedError>& points) {

@@ -57,7 +57,8 @@ ProgressiveResult render_progressive(RenderSession& session, Film& film, const P
         const SampleRange pass{result.end_sample, result.end_sample + size};
         session.render_samples(film, pass, tile_done);
         result.end_sample = pass.end;
-        const PassReport report{result.passes++, pass, pass.end - options.film_first_sample, clock() - t0};
+        const PassReport report{result.passes++, pass, pass.end - options.film_first_sample, clock() - t0,
+                                pass.end == options.samples.end};
         if (observer && !observer->pass_done(film, report)) {
             result.reason = StopReason::observer;
             break;

@@ -34,6 +34,7 @@ struct PassReport {
     SampleRange pass_samples; // the samples this pass added
     uint32_t film_spp = 0;    // every pixel's sample count after the pass
     double seconds = 0.0;     // since the progressive render started
+    bool last = false;        // the render's samples are all done (a time limit or a stop may end it earlier)
 };
 
 // What a caller sees of a progressive render. Both hooks run on the render's threads.
