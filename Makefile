@@ -36,7 +36,7 @@ tradeoff: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
 	mkdir -p $(TRADEOFF_DIR)
 	$(BUILD_DIR)/bin/wavetrace tradeoff $(SCENE) --width 200 --height 200 --reference $(REFERENCE) \
-	  --spp 4,16,64,256 --repeats 3 --csv $(TRADEOFF_DIR)/points.csv --fits-csv $(TRADEOFF_DIR)/fits.csv \
+	  --spp 4,16,64,256 --repeats 5 --csv $(TRADEOFF_DIR)/points.csv --fits-csv $(TRADEOFF_DIR)/fits.csv \
 	  | tee $(TRADEOFF_DIR)/table.txt
 	tools/plot_tradeoff.py $(TRADEOFF_DIR)/points.csv $(TRADEOFF_DIR)/fits.csv docs/tradeoff.png \
 	  --title "hexroom 200x200, 2 threads: RMSE against time, one knob changed at a time"
