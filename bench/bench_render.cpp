@@ -2,6 +2,8 @@
 //   render/wavefront/<isa>/threads:<n>   the wavefront integrator on each kernel ISA (--isa)
 //   render/reference/scalar/threads:<n>  the reference integrator, one path at a time through
 //                                        the scalar intersection code whatever --isa says
+//   render/progressive/<isa>/threads:<n> the wavefront integrator in the command line's passes
+//                                        (1, 1, 2, 4, 8 spp): the cost of passes against one go
 // on 1 and 2 threads. The image is small enough for an iteration to take about half a second
 // to a second on the best ISA with 2 threads, and large enough to keep every thread busy
 // (256 tiles of 16x16 pixels).
@@ -18,6 +20,7 @@
 #include "core/film/film.h"
 #include "core/scene.h"
 #include "kernels/isa/intersect_dispatch.h"
+#include "kernels/progressive_render.h"
 #include "kernels/renderer.h"
 
 namespace {
@@ -34,13 +37,21 @@ const Scene& render_scene() {
     return scene;
 }
 
-void measure_render(benchmark::State& state, const RenderOptions& options) {
+void measure_render(benchmark::State& state, const RenderOptions& options, bool progressive) {
     const Scene& scene = render_scene();
     RayCounts total;
     for (auto _ : state) {
         // A fresh film each time: the film accumulates, and a render always starts from an empty one.
         Film film(scene.settings.width, scene.settings.height);
-        total += render(scene, options, film).counts;
+        if (progressive) {
+            RenderSession session(scene, options);
+            ProgressiveOptions passes;
+            passes.samples = {0, uint32_t(scene.settings.spp)};
+            render_progressive(session, film, passes);
+            total += session.result().counts;
+        } else {
+            total += render(scene, options, film).counts;
+        }
         benchmark::DoNotOptimize(film);
     }
     // Totals over all iterations, as rates over the measured (real) time.
@@ -48,9 +59,11 @@ void measure_render(benchmark::State& state, const RenderOptions& options) {
     state.counters["rays_per_second"] = benchmark::Counter(double(total.total_rays()), benchmark::Counter::kIsRate);
 }
 
-void register_render(const std::string& integrator, const std::string& isa, int threads, const RenderOptions& options) {
-    const std::string name = "render/" + integrator + "/" + isa + "/threads:" + std::to_string(threads);
-    benchmark::RegisterBenchmark(name.c_str(), [options](benchmark::State& state) { measure_render(state, options); })
+void register_render(const std::string& kind, const std::string& isa, int threads, const RenderOptions& options) {
+    const std::string name = "render/" + kind + "/" + isa + "/threads:" + std::to_string(threads);
+    const bool progressive = kind == "progressive";
+    benchmark::RegisterBenchmark(name.c_str(),
+                                 [options, progressive](benchmark::State& state) { measure_render(state, options, progressive); })
         // Real time: the work runs on the render's own threads, not on the one Google Benchmark times.
         ->UseRealTime()
         ->Unit(benchmark::kMillisecond);
@@ -64,6 +77,7 @@ void register_render_benchmarks(const std::vector<Isa>& isas) {
             options.threads = threads;
             options.isa = isa;
             register_render("wavefront", isa_name(isa), threads, options);
+            register_render("progressive", isa_name(isa), threads, options);
         }
     }
     for (int threads : kThreadCounts) {

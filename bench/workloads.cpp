@@ -143,8 +143,9 @@ RaySet shadow_rays(const Scene& scene, const std::optional<Ball>& solid, const C
             const SurfacePoint surface = surface_at(scene, probe, hit);
             const Material& material = scene.materials[surface.material];
             if (!gathers_direct_light(material)) continue;
-            const DirectLightSampler lights(scene, material, surface, light_sampling_point(surface, probe.direction),
-                                            probe.direction, unit_throughput, path_key(light_seed, first + i, 0), 0, 1);
+            const DirectLightSampler<> lights(scene, material, surface, light_sampling_point(surface, probe.direction),
+                                              probe.direction, unit_throughput, PathSeed{path_key(light_seed, first + i, 0), 0},
+                                              0, 1);
             lights.sample_all([&](const ShadowRay& shadow) { rays.push_back(shadow.ray, shadow.tmax); });
         }
     }

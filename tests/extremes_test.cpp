@@ -925,8 +925,8 @@ void expect_spawned_rays_leave(const Scene& scene, uint32_t prim, int hit_count,
         // it gets three tries (and always reflects beyond the critical angle).
         int bounce = 0;
         for (uint32_t material : {0u, 1u, 2u, 2u, 2u}) {
-            const auto next = continue_path(single, single.materials[material], surface, incoming.direction, glm::vec3(1.0f),
-                                            key, uint32_t(bounce++));
+            const auto next = continue_path<DefaultEstimator>(single, single.materials[material], surface, incoming.direction,
+                                                              glm::vec3(1.0f), PathSeed{key, 0}, uint32_t(bounce++));
             if (next) spawned.push_back(next->ray);
         }
         for (std::size_t i = 0; i < spawned.size(); ++i) {

@@ -80,6 +80,23 @@ TEST(Progressive, RangesRenderedIntoSeparateFilmsAddToTheWholeRender) {
     EXPECT_FALSE(parts[0] == whole.film) << "a part alone is not the whole";
 }
 
+// "Add samples to a finished render": no sampler's numbers depend on the spp a render asks for,
+// so 8 spp continued to 20 is the 20-spp render, with each sampler.
+TEST(Progressive, RaisingTheSppOfAFinishedRenderGivesTheRenderOfTheLargerSpp) {
+    for (SamplerKind sampler : {SamplerKind::independent, SamplerKind::stratified, SamplerKind::sobol}) {
+        SCOPED_TRACE(name_of(sampler));
+        SceneDescription d = test::hexroom(16, 12, 8, 4);
+        d.settings.estimator.sampler = sampler;
+        const Scene eight = build_scene(d);
+        Film film(16, 12);
+        RenderSession(eight, options_for(Integrator::wavefront, 2)).render_samples(film, {0, 8});
+        d.settings.spp = 20;
+        const Scene twenty = build_scene(d);
+        RenderSession(twenty, options_for(Integrator::wavefront, 2)).render_samples(film, {8, 20});
+        EXPECT_TRUE(film == test::render_film(d, Integrator::wavefront, 1).film);
+    }
+}
+
 TEST(Progressive, PassesDoubleTheImageSppUntilAPassWouldTakeTooLong) {
     EXPECT_EQ(next_pass_size(0, 100, 0.0, 2.0, 1e9), 1u);
     EXPECT_EQ(next_pass_size(1, 100, 0.0, 2.0, 1e9), 1u) << "no speed known yet: double";

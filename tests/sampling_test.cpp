@@ -151,34 +151,6 @@ TEST(Frame, IsOrthonormalForEveryNormalIncludingStraightDown) {
     }
 }
 
-TEST(StratifiedPixelOffset, SquareCountsPutOneSampleInEveryStratum) {
-    const uint32_t spp = 64;
-    std::set<std::pair<int, int>> cells;
-    for (uint32_t s = 0; s < spp; ++s) {
-        const glm::vec2 o = stratified_pixel_offset(s, spp, uniform(1, s, 0), uniform(1, s, 1));
-        ASSERT_GE(o.x, 0.0f);
-        ASSERT_LE(o.x, 1.0f);
-        cells.insert({int(o.x * 8), int(o.y * 8)});
-    }
-    EXPECT_EQ(cells.size(), 64u);
-}
-
-TEST(StratifiedPixelOffset, NonSquareCountsAreUniformOverThePixel) {
-    // spp = 10: nine stratified samples plus one uniform; pooled over many pixels the offsets
-    // must be uniform on the pixel, or the pixel estimate would be biased.
-    const uint32_t spp = 10;
-    const int g = 6, pixels = 30000;
-    std::vector<double> observed(g * g, 0.0), expected(g * g, double(pixels) * spp / (g * g));
-    for (int p = 0; p < pixels; ++p) {
-        for (uint32_t s = 0; s < spp; ++s) {
-            const uint64_t key = path_key(0, uint32_t(p), s);
-            const glm::vec2 o = stratified_pixel_offset(s, spp, uniform(key, 0, 0), uniform(key, 0, 1));
-            observed[std::size_t(std::min(g - 1, int(o.x * g)) * g + std::min(g - 1, int(o.y * g)))] += 1.0;
-        }
-    }
-    EXPECT_GT(test::chi_square_test(observed, expected).p_value, kAlpha);
-}
-
 TEST(LightTable, PicksLightsInProportionToAreaWithPdfOneOverTotalArea) {
     TriangleSoA tris;
     std::vector<Material> materials(2);

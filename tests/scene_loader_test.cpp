@@ -27,6 +27,8 @@ using wt::TriangleMesh;
 using wt::TriangleTest;
 using wt::SphereTest;
 using wt::FresnelModel;
+using wt::LightSampling;
+using wt::SamplerKind;
 using Json = nlohmann::ordered_json;
 
 const std::string kSource = "test.json";
@@ -447,7 +449,7 @@ TEST(SceneErrors, UnknownCameraKey) {
 TEST(SceneErrors, UnknownRenderKey) {
     expect_scene_error(mutated([](Json& j) { j["render"]["samples"] = 4; }),
                        "render.samples: unknown key (allowed: width, height, spp, shadow_rays, seed, max_bounces, "
-                       "rr_start_bounce, triangle_test, sphere_test, fresnel)");
+                       "rr_start_bounce, triangle_test, sphere_test, fresnel, sampler, light_sampling, clamp_indirect)");
 }
 
 TEST(SceneErrors, UnknownAccuracyChoice) {
@@ -468,6 +470,37 @@ TEST(SceneLoader, ReadsAccuracyOptions) {
     EXPECT_EQ(d.settings.accuracy.triangles, TriangleTest::watertight);
     EXPECT_EQ(d.settings.accuracy.spheres, SphereTest::cancellation_free);
     EXPECT_EQ(d.settings.accuracy.fresnel, FresnelModel::exact);
+}
+
+TEST(SceneLoader, ReadsEstimatorOptions) {
+    const SceneDescription defaults = parse_scene_json(mutated([](Json&) {}), "test.json");
+    EXPECT_EQ(defaults.settings.estimator.sampler, SamplerKind::stratified);
+    EXPECT_EQ(defaults.settings.estimator.light_sampling, LightSampling::nee);
+    EXPECT_EQ(defaults.settings.estimator.clamp_indirect, 0.0f);
+    const SceneDescription d = parse_scene_json(
+        mutated([](Json& j) {
+            j["render"]["sampler"] = "sobol";
+            j["render"]["light_sampling"] = "mis";
+            j["render"]["clamp_indirect"] = 2.5;
+        }),
+        "test.json");
+    EXPECT_EQ(d.settings.estimator.sampler, SamplerKind::sobol);
+    EXPECT_EQ(d.settings.estimator.light_sampling, LightSampling::mis);
+    EXPECT_EQ(d.settings.estimator.clamp_indirect, 2.5f);
+    EXPECT_EQ(parse_scene_json(mutated([](Json& j) { j["render"]["sampler"] = "independent"; }), "test.json")
+                  .settings.estimator.sampler,
+              SamplerKind::independent);
+}
+
+TEST(SceneErrors, BadEstimatorOption) {
+    expect_scene_error(mutated([](Json& j) { j["render"]["sampler"] = "halton"; }),
+                       "render.sampler: must be one of \"independent\", \"stratified\", \"sobol\", got string \"halton\"");
+    expect_scene_error(mutated([](Json& j) { j["render"]["light_sampling"] = "bsdf"; }),
+                       "render.light_sampling: must be one of \"nee\", \"mis\"");
+    expect_scene_error(mutated([](Json& j) { j["render"]["light_sampling"] = true; }), "render.light_sampling: expected a string");
+    expect_scene_error(mutated([](Json& j) { j["render"]["clamp_indirect"] = -1; }),
+                       "render.clamp_indirect: must be non-negative (0 turns the clamp off), got -1");
+    expect_scene_error(mutated([](Json& j) { j["render"]["clamp_indirect"] = "high"; }), "render.clamp_indirect: expected a number");
 }
 
 TEST(SceneErrors, UnknownMaterialKey) {

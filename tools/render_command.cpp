@@ -44,6 +44,12 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::IsMember({"quadratic", "cancellation_free"}));
     cmd->add_option("--fresnel", o.fresnel, "schlick (approximation) or exact (dielectric Fresnel equations)")
         ->check(CLI::IsMember({"schlick", "exact"}));
+    cmd->add_option("--sampler", o.sampler, "stratified (jittered pixel), independent, or sobol (Owen-scrambled Sobol')")
+        ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
+    cmd->add_option("--light-sampling", o.light_sampling, "nee (light samples only) or mis (light and BSDF samples, power heuristic)")
+        ->check(CLI::IsMember({"nee", "mis"}));
+    cmd->add_option("--clamp-indirect", o.clamp_indirect, "Limit each indirect contribution to X per channel (0: off)")
+        ->check(CLI::NonNegativeNumber);
     cmd->add_option("--isa", o.isa_name, "Intersection kernels: scalar, sse4, avx2, avx512 or auto (the best this CPU runs)")
         ->check(CLI::IsMember({"auto", "scalar", "sse4", "avx2", "avx512"}));
     cmd->add_option("--accel", o.accel_name,
@@ -85,6 +91,9 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.triangle_test) s.accuracy.triangles = *parse_triangle_test(*o.triangle_test);
     if (o.sphere_test) s.accuracy.spheres = *parse_sphere_test(*o.sphere_test);
     if (o.fresnel) s.accuracy.fresnel = *parse_fresnel_model(*o.fresnel);
+    if (o.sampler) s.estimator.sampler = *parse_sampler(*o.sampler);
+    if (o.light_sampling) s.estimator.light_sampling = *parse_light_sampling(*o.light_sampling);
+    if (o.clamp_indirect) s.estimator.clamp_indirect = *o.clamp_indirect;
 }
 
 // Resolves the film and writes every output; a failure is an ImageError naming the file.

@@ -1,5 +1,6 @@
 #include "tradeoff_knobs.h"
 
+#include <sstream>
 #include <stdexcept>
 
 namespace wt {
@@ -13,6 +14,9 @@ void set_max_bounces(RenderSettings& s, const std::string& v) { s.max_bounces = 
 void set_fresnel(RenderSettings& s, const std::string& v) { s.accuracy.fresnel = *parse_fresnel_model(v); }
 void set_triangle_test(RenderSettings& s, const std::string& v) { s.accuracy.triangles = *parse_triangle_test(v); }
 void set_sphere_test(RenderSettings& s, const std::string& v) { s.accuracy.spheres = *parse_sphere_test(v); }
+void set_sampler(RenderSettings& s, const std::string& v) { s.estimator.sampler = *parse_sampler(v); }
+void set_light_sampling(RenderSettings& s, const std::string& v) { s.estimator.light_sampling = *parse_light_sampling(v); }
+void set_clamp(RenderSettings& s, const std::string& v) { s.estimator.clamp_indirect = std::stof(v); }
 
 std::string shadow_rays(const RenderSettings& s) { return std::to_string(s.shadow_rays); }
 std::string rr_start(const RenderSettings& s) { return std::to_string(s.rr_start_bounce); }
@@ -20,6 +24,13 @@ std::string max_bounces(const RenderSettings& s) { return std::to_string(s.max_b
 std::string fresnel(const RenderSettings& s) { return name_of(s.accuracy.fresnel); }
 std::string triangle_test(const RenderSettings& s) { return name_of(s.accuracy.triangles); }
 std::string sphere_test(const RenderSettings& s) { return name_of(s.accuracy.spheres); }
+std::string sampler(const RenderSettings& s) { return name_of(s.estimator.sampler); }
+std::string light_sampling(const RenderSettings& s) { return name_of(s.estimator.light_sampling); }
+std::string clamp(const RenderSettings& s) {
+    std::ostringstream out;  // 4 -> "4", as the table writes it
+    out << s.estimator.clamp_indirect;
+    return out.str();
+}
 
 }  // namespace
 
@@ -32,6 +43,10 @@ const std::vector<Knob>& tradeoff_knobs() {
         {"fresnel", {"schlick", "exact"}, true, set_fresnel, fresnel},
         {"triangle_test", {"moller_trumbore", "watertight"}, true, set_triangle_test, triangle_test},
         {"sphere_test", {"quadratic", "cancellation_free"}, true, set_sphere_test, sphere_test},
+        {"sampler", {"independent", "stratified", "sobol"}, false, set_sampler, sampler},
+        {"light_sampling", {"nee", "mis"}, false, set_light_sampling, light_sampling},
+        // 0 is off; the clamp trades bias (the mean drops where caustics are) for variance.
+        {"clamp_indirect", {"0", "1", "4", "16"}, true, set_clamp, clamp},
     };
     return knobs;
 }

@@ -1,19 +1,12 @@
 #include "core/accuracy.h"
 
+#include "core/enum_names.h"
+
 namespace wt {
 
 const char* name_of(TriangleTest t) { return t == TriangleTest::watertight ? "watertight" : "moller_trumbore"; }
 const char* name_of(SphereTest s) { return s == SphereTest::cancellation_free ? "cancellation_free" : "quadratic"; }
 const char* name_of(FresnelModel f) { return f == FresnelModel::exact ? "exact" : "schlick"; }
-
-namespace {
-template <typename Enum>
-std::optional<Enum> parse_one_of(const std::string& text, std::initializer_list<Enum> values) {
-    for (Enum v : values)
-        if (text == name_of(v)) return v;
-    return std::nullopt;
-}
-}  // namespace
 
 std::optional<TriangleTest> parse_triangle_test(const std::string& s) {
     return parse_one_of(s, {TriangleTest::moller_trumbore, TriangleTest::watertight});

@@ -33,6 +33,7 @@ public:
     bool empty() const { return emitters_.empty(); }
     std::size_t size() const { return emitters_.size(); }
     float total_area() const { return total_area_; }
+    float pdf_area() const { return pdf_area_; }  // of every light point sample() returns
 
     // u_choice picks the triangle, (u0, u1) the point on it. (The triangles argument is the
     // scene's; the table keeps its own copy of what sampling reads, in one cache line per light.)

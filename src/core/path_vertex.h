@@ -2,28 +2,36 @@
 // What happens at one path vertex — emission, light samples, the next direction, Russian
 // roulette — written once and called by both the reference integrator and the wavefront shade
 // kernel. The two integrators differ only in how they schedule this work, never in the
-// estimator, so agreement between them tests the scheduling.
+// estimator, so agreement between them tests the scheduling. Everything is a template over
+// the Estimator (core/estimator.h): the sampler, nee or mis, and the indirect clamp.
 
 #include <cmath>
 #include <optional>
 
 #include <glm/geometric.hpp>
 
+#include "core/estimator.h"
 #include "core/materials/bsdf.h"
 #include "core/float_minmax.h"
 #include "core/ray_offset.h"
-#include "core/sampling/rng.h"
+#include "core/sampling/samplers.h"
 #include "core/scene.h"
 #include "core/materials/shading_normal_bsdf.h"
 
 namespace wt {
 
-// The camera ray of sample `sample` in pixel `pixel` (row-major index), jittered inside its
-// stratum of the pixel.
-inline Ray camera_ray(const Scene& scene, uint32_t pixel, uint32_t sample, uint64_t key) {
+template <typename E>
+inline PathSeed path_seed(const Scene& scene, uint32_t pixel, uint32_t sample) {
+    return {E::Sampler::key_of(scene.settings.seed, pixel, sample), sample};
+}
+
+// The camera ray of the path's sample in pixel `pixel` (row-major index), placed in the pixel
+// by the sampler.
+template <typename E>
+inline Ray camera_ray(const Scene& scene, uint32_t pixel, const PathSeed& path) {
     const uint32_t width = uint32_t(scene.settings.width);
-    const UniformPair jitter = VertexRandom(key, 0).pair(dim::camera_x);
-    const glm::vec2 offset = stratified_pixel_offset(sample, uint32_t(scene.settings.spp), jitter.first, jitter.second);
+    const typename E::Sampler random(path, 0, uint32_t(scene.settings.shadow_rays));
+    const glm::vec2 offset = random.pixel_offset(scene.settings.seed, pixel, path.sample);
     return scene.camera.generate_ray(float(pixel % width) + offset.x, float(pixel / width) + offset.y);
 }
 
@@ -59,22 +67,59 @@ inline LightSamplingPoint light_sampling_point(const SurfacePoint& surface, cons
             offset_ray_origin(surface.position, surface.error, n), surface.smooth};
 }
 
+// The emission a path adds at a hit, arriving along `ray` with `throughput` after a flight of
+// `t`. `bsdf_pdf` is the solid-angle pdf with which the previous vertex's BSDF sampled `ray`
+// when light samples there could have found this point too (mis only: 0 after the camera and
+// after specular bounces, where no light sample competes and the emission counts in full).
+template <typename E>
+inline glm::vec3 emission_added(const Scene& scene, const Material& m, const SurfacePoint& surface, const Ray& ray, float t,
+                                const glm::vec3& throughput, float bsdf_pdf, uint32_t bounce) {
+    glm::vec3 e = throughput * emitted_towards(m, surface.normal, ray.direction);
+    if constexpr (E::mis) {
+        if (bsdf_pdf > 0.0f && m.is_emissive()) {
+            // The light samples' pdf for this point, per unit solid angle at the previous vertex.
+            const float cos_light = -glm::dot(surface.normal, ray.direction);
+            const float light_pdf = scene.lights.pdf_area() * t * t / cos_light;
+            e *= power_heuristic(bsdf_pdf, float(scene.settings.shadow_rays) * light_pdf);
+        }
+    }
+    if constexpr (E::clamps_indirect)
+        if (is_indirect_emission(bounce)) e = clamped_per_channel(e, scene.settings.estimator.clamp_indirect);
+    return e;
+}
+
+// The solid-angle pdf with which continue_path drew the diffuse direction wi at `surface`,
+// arriving along d: cosine-weighted about the facing normal, or folded about the shading normal.
+inline float diffuse_direction_pdf(const SurfacePoint& surface, const glm::vec3& d, const glm::vec3& wi) {
+    const glm::vec3 n = glm::dot(d, surface.normal) < 0.0f ? surface.normal : -surface.normal;
+    const float cos_geom = glm::dot(n, wi);
+    if (!surface.smooth) return cos_geom * kInvPi;
+    return folded_cosine_pdf(n, shading_normal_facing(surface.shading_normal, n), wi, cos_geom);
+}
+
 // The light samples of one diffuse vertex (next-event estimation). Sample `index` of `count`
-// estimates f * Le * cos_x * cos_y / (dist^2 * pdf_area), averaged over the `count` shadow rays.
-// What the samples share (the ray origin, the BSDF's view-dependent part, where the vertex's
-// random numbers start) is computed once, in the constructor, not once per shadow ray.
+// estimates f * Le * cos_x * cos_y / (dist^2 * pdf_area), averaged over the `count` shadow rays;
+// with mis, weighted by the power heuristic against the BSDF sampling of the same direction
+// (when the path can still continue: at the bounce cap no BSDF sample competes). What the
+// samples share (the ray origin, the BSDF's view-dependent part, where the vertex's random
+// numbers start) is computed once, in the constructor, not once per shadow ray.
+template <typename E = DefaultEstimator>
 class DirectLightSampler {
 public:
     DirectLightSampler(const Scene& scene, const Material& m, const SurfacePoint& surface, const LightSamplingPoint& at,
-                       const glm::vec3& d, const glm::vec3& throughput, uint64_t key, uint32_t bounce, uint32_t count)
+                       const glm::vec3& d, const glm::vec3& throughput, const PathSeed& path, uint32_t bounce, uint32_t count)
         : scene_(scene),
           at_(at),
           position_(surface.position),
           throughput_(throughput),
           bsdf_(m, at.shading_normal, -d),
-          random_(key, bounce),
+          random_(path, bounce, count),
           count_(count),
-          count_float_(float(count)) {}
+          count_float_(float(count)),
+          bsdf_competes_(E::mis && int(bounce) + 1 < scene.settings.max_bounces),
+          clamp_limit_(E::clamps_indirect && is_indirect_light_sample(bounce)
+                           ? scene.settings.estimator.clamp_indirect / float(count)
+                           : INFINITY) {}
 
     // Every light sample of the vertex, in index order; emit(const ShadowRay&) gets each one that
     // can contribute. One loop here rather than one call per sample in the caller: the shared
@@ -126,6 +171,14 @@ public:
         s.tmax = glm::length(span);
         s.ray.direction = span / s.tmax;
         s.contribution = throughput_ * f * light.radiance * geometry;
+        if constexpr (E::mis) {
+            if (bsdf_competes_) {
+                const float light_pdf = light.pdf_area * dist2 / cos_y;  // per unit solid angle
+                const float bsdf_pdf = Folded ? folded_cosine_pdf(n, at_.shading_normal, wi, cos_x) : cos_x * kInvPi;
+                s.contribution *= power_heuristic(count_float_ * light_pdf, bsdf_pdf);
+            }
+        }
+        if constexpr (E::clamps_indirect) s.contribution = clamped_per_channel(s.contribution, clamp_limit_);
         return true;
     }
 
@@ -135,24 +188,30 @@ private:
     glm::vec3 position_;  // the shading point, before the offset
     glm::vec3 throughput_;
     DiffuseBsdfAtView bsdf_;  // about the shading normal
-    VertexRandom random_;
+    typename E::Sampler random_;
     uint32_t count_;
     float count_float_;
+    bool bsdf_competes_;  // mis, and the path may continue past this vertex
+    float clamp_limit_;   // per shadow ray; infinite when this vertex's samples are not clamped
 };
 
 struct PathContinuation {
     Ray ray;
     glm::vec3 throughput;
-    bool specular;  // the next hit's emission is counted: no light sample covered this direction
+    // The next hit's emission is counted: always with mis, else only after a specular bounce
+    // (no light sample covered this direction).
+    bool count_emission;
+    float bsdf_pdf;  // mis: the direction's pdf if light samples competed for it, else 0 (emission_added)
 };
 
 // Samples the next direction from the BSDF and applies Russian roulette. Empty when the path
 // ends. `bounce` is the index of the vertex being shaded (0 = first hit).
+template <typename E>
 inline std::optional<PathContinuation> continue_path(const Scene& scene, const Material& m, const SurfacePoint& surface,
-                                                     const glm::vec3& d, const glm::vec3& throughput, uint64_t key,
+                                                     const glm::vec3& d, const glm::vec3& throughput, const PathSeed& path,
                                                      uint32_t bounce) {
     if (int(bounce) + 1 >= scene.settings.max_bounces) return std::nullopt;
-    const VertexRandom random(key, bounce);
+    const typename E::Sampler random(path, bounce, uint32_t(scene.settings.shadow_rays));
     const UniformPair direction = random.pair(dim::bsdf_u);
     const UniformPair choice_and_roulette = random.pair(dim::bsdf_choice);
     const FresnelModel fresnel = scene.settings.accuracy.fresnel;
@@ -167,7 +226,10 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
     // A black surface (the light's back, an albedo-0 emitter) ends the path: nothing it could
     // gather would count.
     if (!(next.throughput.x > 0.0f || next.throughput.y > 0.0f || next.throughput.z > 0.0f)) return std::nullopt;
-    next.specular = s.specular;
+    next.count_emission = E::mis || s.specular;
+    next.bsdf_pdf = 0.0f;
+    if constexpr (E::mis)
+        if (!s.specular) next.bsdf_pdf = diffuse_direction_pdf(surface, d, s.direction);
     if (int(bounce) >= scene.settings.rr_start_bounce) {
         // Survival proportional to throughput keeps the estimator unbiased (weight / q) while
         // ending dim paths early; the cap keeps even bright paths terminating.

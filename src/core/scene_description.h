@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/accuracy.h"
+#include "core/estimator_settings.h"
 
 namespace wt {
 
@@ -73,6 +74,7 @@ struct RenderSettings {
     int max_bounces = 64;    // hard cap; Russian roulette ends almost every path long before
     int rr_start_bounce = 3; // first bounce at which Russian roulette may end a path
     AccuracySettings accuracy;
+    EstimatorSettings estimator;
 };
 
 struct SceneDescription {

@@ -6,20 +6,24 @@
 
 namespace wt {
 
-glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
-                               std::vector<PathVertexRecord>* record, const BvhView* bvh) {
+namespace {
+
+template <typename E>
+glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
+                     std::vector<PathVertexRecord>* record, const BvhView* bvh) {
     const AccuracySettings& accuracy = scene.settings.accuracy;
     auto closest = [&](const Ray& r) { return bvh ? bvh_intersect_closest(*bvh, accuracy, r) : intersect_closest(scene, r); };
     auto blocked = [&](const Ray& r, float tmax) {
         return bvh ? bvh_intersect_any(*bvh, accuracy, r, tmax) : intersect_any(scene, r, tmax);
     };
-    const uint64_t key = path_key(scene.settings.seed, pixel, sample);
+    const PathSeed path = path_seed<E>(scene, pixel, sample);
     const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
-    Ray ray = camera_ray(scene, pixel, sample, key);
+    Ray ray = camera_ray<E>(scene, pixel, path);
     ++counts.camera_rays;
     glm::vec3 radiance(0.0f);
     glm::vec3 throughput(1.0f);
-    bool count_emission = true;  // camera rays and specular bounces: no light sample covered them
+    bool count_emission = true;  // camera rays, specular bounces (no light sample covered them), any with mis
+    float bsdf_pdf = 0.0f;       // mis: see emission_added
 
     for (uint32_t bounce = 0;; ++bounce) {
         const Hit hit = closest(ray);
@@ -30,12 +34,12 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
                                 throughput, glm::vec3(0.0f), 0, 0, glm::vec3(0.0f)};
 
         if (count_emission) {
-            vertex.emission_added = throughput * emitted_towards(m, surface.normal, ray.direction);
+            vertex.emission_added = emission_added<E>(scene, m, surface, ray, hit.t, throughput, bsdf_pdf, bounce);
             radiance += vertex.emission_added;
         }
         if (!scene.lights.empty() && gathers_direct_light(m)) {
-            const DirectLightSampler lights(scene, m, surface, light_sampling_point(surface, ray.direction), ray.direction,
-                                            throughput, key, bounce, shadow_ray_count);
+            const DirectLightSampler<E> lights(scene, m, surface, light_sampling_point(surface, ray.direction),
+                                               ray.direction, throughput, path, bounce, shadow_ray_count);
             lights.sample_all([&](const ShadowRay& shadow) {
                 ++counts.shadow_rays;
                 ++vertex.shadow_rays_traced;
@@ -47,28 +51,46 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
         }
         if (record) record->push_back(vertex);
 
-        const auto next = continue_path(scene, m, surface, ray.direction, throughput, key, bounce);
+        const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce);
         if (!next) break;
         ++counts.bounce_rays;
         ray = next->ray;
         throughput = next->throughput;
-        count_emission = next->specular;
+        count_emission = next->count_emission;
+        bsdf_pdf = next->bsdf_pdf;
     }
     return radiance;
 }
 
-void render_reference_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
-                           RayCounts& counts, const BvhView* bvh) {
+template <typename E>
+void render_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
+                 RayCounts& counts, const BvhView* bvh) {
     for (int y = tile.y0; y < tile.y1; ++y) {
         for (int x = tile.x0; x < tile.x1; ++x) {
             const uint32_t pixel = uint32_t(y) * uint32_t(scene.settings.width) + uint32_t(x);
             for (uint32_t s = sample_begin; s < sample_end; ++s) {
-                const glm::vec3 radiance = trace_reference_path(scene, pixel, s, counts, nullptr, bvh);
+                const glm::vec3 radiance = trace_path<E>(scene, pixel, s, counts, nullptr, bvh);
                 ++counts.samples;
                 if (!film.add_sample(pixel, radiance)) ++counts.nonfinite_samples;
             }
         }
     }
+}
+
+}  // namespace
+
+glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
+                               std::vector<PathVertexRecord>* record, const BvhView* bvh) {
+    return with_estimator(scene.settings.estimator, [&](auto estimator) {
+        return trace_path<decltype(estimator)>(scene, pixel, sample, counts, record, bvh);
+    });
+}
+
+void render_reference_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
+                           RayCounts& counts, const BvhView* bvh) {
+    with_estimator(scene.settings.estimator, [&](auto estimator) {
+        render_tile<decltype(estimator)>(scene, tile, sample_begin, sample_end, film, counts, bvh);
+    });
 }
 
 }  // namespace wt

@@ -59,6 +59,15 @@ inline glm::vec3 folded_diffuse(const DiffuseBsdfAtView& about_shading, const gl
     return lobe(wi) + lobe(mirrored);
 }
 
+// The pdf, per unit solid angle, with which sample_bsdf_about_shading_normal draws a diffuse
+// direction wi above the geometric surface (cos_geom = dot(n_geom, wi) > 0): the cosine lobe
+// about n_shading at wi plus at its mirror image below the surface, the two ways to reach wi.
+// Normals as in folded_diffuse. The multiple importance weights need it.
+inline float folded_cosine_pdf(const glm::vec3& n_geom, const glm::vec3& n_shading, const glm::vec3& wi, float cos_geom) {
+    const glm::vec3 mirrored = wi - (2.0f * cos_geom) * n_geom;
+    return (fmax_float(0.0f, glm::dot(n_shading, wi)) + fmax_float(0.0f, glm::dot(n_shading, mirrored))) * kInvPi;
+}
+
 // w if it is strictly on the side of the unit normal `side`, else w mirrored through the plane
 // of `side`; `ok` says whether the result is strictly on that side (false only for w exactly in
 // the plane, or not finite).

@@ -64,16 +64,4 @@ inline glm::vec2 sample_uniform_triangle(float u0, float u1) {
     return {u1 * su0, 1.0f - su0};
 }
 
-// Sample `sample` of `spp` inside a pixel, as an offset in [0,1)^2. The first k*k samples
-// (k = floor(sqrt(spp))) each own one cell of a k x k grid and are jittered inside it; any
-// remaining samples are uniform over the pixel. Every sample is therefore uniform over its
-// own region and the regions tile the pixel evenly, so the pixel estimate stays unbiased for
-// any spp while square counts get full stratification.
-inline glm::vec2 stratified_pixel_offset(uint32_t sample, uint32_t spp, float jitter_x, float jitter_y) {
-    const uint32_t k = uint32_t(std::sqrt(double(spp)));
-    if (sample >= k * k) return {jitter_x, jitter_y};
-    const float inv_k = 1.0f / float(k);
-    return {(float(sample % k) + jitter_x) * inv_k, (float(sample / k) + jitter_y) * inv_k};
-}
-
 }  // namespace wt

@@ -40,7 +40,7 @@ CameraDescription read_camera(const Reader& in, const Json& j, const std::string
 RenderSettings read_render(const Reader& in, const Json& j, const std::string& path) {
     in.expect_object(j, path);
     in.check_keys(j, path, {"width", "height", "spp", "shadow_rays", "seed", "max_bounces", "rr_start_bounce",
-                            "triangle_test", "sphere_test", "fresnel"});
+                            "triangle_test", "sphere_test", "fresnel", "sampler", "light_sampling", "clamp_indirect"});
     RenderSettings s;
     const auto read_int = [&](const char* key, int& field, uint64_t lo, uint64_t hi) {
         if (const Json* v = in.optional(j, key)) field = int(in.integer(*v, member_path(path, key), lo, hi));
@@ -63,6 +63,14 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     read_choice("triangle_test", s.accuracy.triangles, parse_triangle_test, "\"moller_trumbore\", \"watertight\"");
     read_choice("sphere_test", s.accuracy.spheres, parse_sphere_test, "\"quadratic\", \"cancellation_free\"");
     read_choice("fresnel", s.accuracy.fresnel, parse_fresnel_model, "\"schlick\", \"exact\"");
+    read_choice("sampler", s.estimator.sampler, parse_sampler, "\"independent\", \"stratified\", \"sobol\"");
+    read_choice("light_sampling", s.estimator.light_sampling, parse_light_sampling, "\"nee\", \"mis\"");
+    if (const Json* clamp = in.optional(j, "clamp_indirect")) {
+        const std::string clamp_path = member_path(path, "clamp_indirect");
+        s.estimator.clamp_indirect = in.number(*clamp, clamp_path);
+        if (!(s.estimator.clamp_indirect >= 0.0f))
+            in.fail(clamp_path, "must be non-negative (0 turns the clamp off), got " + describe(*clamp));
+    }
     return s;
 }
 

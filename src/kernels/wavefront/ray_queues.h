@@ -35,11 +35,12 @@ struct RayQueue {
     AlignedVector<float> ox, oy, oz, dx, dy, dz;
     AlignedVector<float> throughput_r, throughput_g, throughput_b;
     AlignedVector<uint32_t> path;          // slot in the PathTable
-    AlignedVector<uint8_t> count_emission; // camera ray or after a specular bounce
+    AlignedVector<uint8_t> count_emission; // camera ray, after a specular bounce, or any with mis
+    AlignedVector<float> bsdf_pdf;         // mis only: PathContinuation::bsdf_pdf
     std::size_t count = 0;
 
     void reserve(std::size_t n) {
-        for (auto* a : {&ox, &oy, &oz, &dx, &dy, &dz, &throughput_r, &throughput_g, &throughput_b}) a->resize(n);
+        for (auto* a : {&ox, &oy, &oz, &dx, &dy, &dz, &throughput_r, &throughput_g, &throughput_b, &bsdf_pdf}) a->resize(n);
         path.resize(n), count_emission.resize(n);
     }
     void push(const Ray& r, const glm::vec3& throughput, uint32_t slot, bool emission) {
@@ -49,6 +50,12 @@ struct RayQueue {
         throughput_r[i] = throughput.x, throughput_g[i] = throughput.y, throughput_b[i] = throughput.z;
         path[i] = slot;
         count_emission[i] = emission;
+    }
+    // A continuation; the pdf is written only where the estimator reads it (mis).
+    template <bool kWithPdf>
+    void push(const PathContinuation& next, uint32_t slot) {
+        if constexpr (kWithPdf) bsdf_pdf[count] = next.bsdf_pdf;
+        push(next.ray, next.throughput, slot, next.count_emission);
     }
     Ray ray(std::size_t i) const { return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}; }
     glm::vec3 throughput(std::size_t i) const { return {throughput_r[i], throughput_g[i], throughput_b[i]}; }

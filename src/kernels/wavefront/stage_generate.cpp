@@ -3,8 +3,11 @@
 
 namespace wt {
 
-void generate_camera_rays(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end,
-                          PathTable& paths, RayQueue& rays) {
+namespace {
+
+template <typename E>
+void generate_queue(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, PathTable& paths,
+                    RayQueue& rays) {
     const uint32_t width = uint32_t(scene.settings.width);
     rays.count = 0;
     uint32_t slot = 0;
@@ -12,15 +15,25 @@ void generate_camera_rays(const Scene& scene, const Tile& tile, uint32_t sample_
         for (int y = tile.y0; y < tile.y1; ++y) {
             for (int x = tile.x0; x < tile.x1; ++x, ++slot) {
                 const uint32_t pixel = uint32_t(y) * width + uint32_t(x);
-                const uint64_t key = path_key(scene.settings.seed, pixel, s);
+                const PathSeed path = path_seed<E>(scene, pixel, s);
                 paths.pixel[slot] = pixel;
                 paths.sample[slot] = s;
-                paths.key[slot] = key;
+                paths.key[slot] = path.key;
                 paths.radiance_r[slot] = paths.radiance_g[slot] = paths.radiance_b[slot] = 0.0f;
-                rays.push(camera_ray(scene, pixel, s, key), glm::vec3(1.0f), slot, true);
+                // Emission seen from the camera counts in full (no light sample competes: bsdf_pdf 0).
+                rays.push<E::mis>(PathContinuation{camera_ray<E>(scene, pixel, path), glm::vec3(1.0f), true, 0.0f}, slot);
             }
         }
     }
+}
+
+}  // namespace
+
+void generate_camera_rays(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end,
+                          PathTable& paths, RayQueue& rays) {
+    with_estimator(scene.settings.estimator, [&](auto estimator) {
+        generate_queue<decltype(estimator)>(scene, tile, sample_begin, sample_end, paths, rays);
+    });
 }
 
 }  // namespace wt

@@ -1,35 +1,15 @@
-#include "core/path_vertex.h"
-#include "kernels/wavefront/stages.h"
+#include "kernels/wavefront/shade_queue.h"
 
 namespace wt {
 
-// The same vertex logic as trace_reference_path, in the same order (emission, then light
-// samples, then the continuation), so both integrators add a path's terms identically.
+#define WT_DECLARE_SHADE_QUEUE(sampler, lights, clamps) extern template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps));
+WT_FOR_EACH_OPTIONAL_ESTIMATOR(WT_DECLARE_SHADE_QUEUE)
+
 void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
                  RayQueue& next_rays, ShadowQueue& shadows) {
-    const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
-    const bool has_lights = !scene.lights.empty();
-    next_rays.count = 0;
-    shadows.count = 0;
-    for (std::size_t i = 0; i < rays.count; ++i) {
-        const Hit hit = hits.hit(i);
-        if (!hit.found()) continue;  // no environment light: the path ends with what it has
-        const Ray ray = rays.ray(i);
-        const uint32_t slot = rays.path[i];
-        const uint64_t key = paths.key[slot];
-        const glm::vec3 throughput = rays.throughput(i);
-        const SurfacePoint surface = surface_at(scene, ray, hit);
-        const Material& m = scene.materials[surface.material];
-
-        if (rays.count_emission[i]) paths.add_radiance(slot, throughput * emitted_towards(m, surface.normal, ray.direction));
-        if (has_lights && gathers_direct_light(m)) {
-            const DirectLightSampler lights(scene, m, surface, light_sampling_point(surface, ray.direction), ray.direction,
-                                            throughput, key, bounce, shadow_ray_count);
-            lights.sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
-        }
-        const auto next = continue_path(scene, m, surface, ray.direction, throughput, key, bounce);
-        if (next) next_rays.push(next->ray, next->throughput, slot, next->specular);
-    }
+    with_estimator(scene.settings.estimator, [&](auto estimator) {
+        shade_queue<decltype(estimator)>(scene, bounce, rays, hits, paths, next_rays, shadows);
+    });
 }
 
 }  // namespace wt

@@ -11,6 +11,9 @@
 
 namespace wt {
 
+// The generate and shade stages run the scene's estimator (core/estimator.h), chosen once per
+// call, for the whole queue.
+
 // Camera rays for samples [sample_begin, sample_end) of every pixel in the tile, sample-major,
 // so each pixel's samples sit in the path table in ascending order.
 void generate_camera_rays(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end,

@@ -1,0 +1,24 @@
+#include "core/estimator_settings.h"
+
+#include "core/enum_names.h"
+
+namespace wt {
+
+const char* name_of(SamplerKind s) {
+    switch (s) {
+        case SamplerKind::independent: return "independent";
+        case SamplerKind::sobol: return "sobol";
+        case SamplerKind::stratified: break;
+    }
+    return "stratified";
+}
+const char* name_of(LightSampling l) { return l == LightSampling::mis ? "mis" : "nee"; }
+
+std::optional<SamplerKind> parse_sampler(const std::string& s) {
+    return parse_one_of(s, {SamplerKind::independent, SamplerKind::stratified, SamplerKind::sobol});
+}
+std::optional<LightSampling> parse_light_sampling(const std::string& s) {
+    return parse_one_of(s, {LightSampling::nee, LightSampling::mis});
+}
+
+}  // namespace wt
