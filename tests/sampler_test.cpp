@@ -226,6 +226,23 @@ TEST(Samplers, HashSamplersKeepTheRendererOriginalNumbers) {
     }
 }
 
+TEST(Sobol, DimensionOneIsThePascalMatrixRecurrence) {
+    // The columns v_k = v_(k-1) xor (v_(k-1) >> 1) from v_0 = 2^31 (Joe & Kuo's first
+    // polynomial), applied bit by bit: the definition the five-step transform must equal.
+    uint32_t columns[32];
+    columns[0] = 1u << 31;
+    for (int k = 1; k < 32; ++k) columns[k] = columns[k - 1] ^ (columns[k - 1] >> 1);
+    uint32_t state = 7;
+    for (uint32_t i = 0; i < 200000; ++i) {
+        state = state * 1664525u + 1013904223u;
+        const uint32_t index = i < 100000 ? i : state;
+        uint32_t expected = 0;
+        for (int k = 0; k < 32; ++k)
+            if (index >> k & 1u) expected ^= columns[k];
+        ASSERT_EQ(sobol_dimension1(index), expected) << "index " << index;
+    }
+}
+
 // The pixel positions of the stratified sampler, per pixel: point s of a scrambled (0, 2)-sequence.
 std::vector<glm::vec2> stratified_positions(uint64_t seed, uint32_t pixel, uint32_t count) {
     std::vector<glm::vec2> points;

@@ -54,7 +54,7 @@ public:
 
     glm::vec2 pixel_offset(uint64_t seed, uint32_t pixel, uint32_t sample) const {
         const uint64_t h = mix64(mix64(seed ^ kStrataSalt) + uint64_t(pixel) * kGoldenGamma);
-        const SobolPoint p = owen_scrambled_sobol(sample, {uint32_t(h), uint32_t(h >> 32), uint32_t(mix64(h))});
+        const SobolPoint p = owen_scrambled_sobol_unshuffled(sample, {0u, uint32_t(h), uint32_t(h >> 32)});
         return {p.x, p.y};
     }
 

@@ -18,7 +18,6 @@
 //   aligned block of 2^m, so its points are still a (0, m, 2)-net, and two pads shuffled with
 //   independent seeds are uncorrelated (this is what "padding" means: Kollig & Keller 2002).
 
-#include <array>
 #include <cstdint>
 
 namespace wt {
@@ -49,24 +48,19 @@ inline uint32_t owen_scramble(uint32_t v, uint32_t seed) {
     return reverse_bits32(laine_karras_permutation(reverse_bits32(v), seed));
 }
 
-namespace sobol_detail {
-// Dimension 1's columns with their bits reversed: the scramble works on reversed words, so the
-// point is built reversed and one reversal is saved.
-constexpr std::array<uint32_t, 32> dimension1_columns_reversed() {
-    std::array<uint32_t, 32> v{};
-    v[0] = 1u;  // 1 << 31, reversed
-    for (int k = 1; k < 32; ++k) v[k] = v[k - 1] ^ (v[k - 1] << 1);
-    return v;
-}
-constexpr std::array<uint32_t, 32> kDimension1Reversed = dimension1_columns_reversed();
-}  // namespace sobol_detail
-
 // Unscrambled Sobol' point `index` as 32-bit fractions, and dimension 1 with its bits reversed.
+// Dimension 1's generator is the Pascal matrix mod 2: digit r of the point is the xor of the
+// index bits k with binom(k, r) odd, which by Lucas' theorem are the k whose set bits include
+// r's. That xor over supersets is five shift-and-mask steps (a subset-sum transform over the
+// five bits of a bit position), not a loop over the index's 32 bits.
 inline uint32_t sobol_dimension0(uint32_t index) { return reverse_bits32(index); }
 inline uint32_t sobol_dimension1_reversed(uint32_t index) {
-    uint32_t x = 0;
-    for (int k = 0; index != 0; index >>= 1, ++k)
-        if (index & 1u) x ^= sobol_detail::kDimension1Reversed[std::size_t(k)];
+    uint32_t x = index;
+    x ^= (x >> 1) & 0x55555555u;
+    x ^= (x >> 2) & 0x33333333u;
+    x ^= (x >> 4) & 0x0f0f0f0fu;
+    x ^= (x >> 8) & 0x00ff00ffu;
+    x ^= (x >> 16) & 0x0000ffffu;
     return x;
 }
 inline uint32_t sobol_dimension1(uint32_t index) { return reverse_bits32(sobol_dimension1_reversed(index)); }
@@ -88,10 +82,14 @@ inline uint32_t shuffled_index(uint32_t index, const SobolSeeds& seeds) { return
 inline float owen_scrambled_sobol_x(uint32_t shuffled, const SobolSeeds& seeds) {
     return fraction_to_float(reverse_bits32(laine_karras_permutation(shuffled, seeds.scramble_x)));
 }
+// Point `index` itself (no shuffle), scrambled: where one 2D sequence is all there is to
+// decorrelate, as for the pixel position alone.
+inline SobolPoint owen_scrambled_sobol_unshuffled(uint32_t index, const SobolSeeds& seeds) {
+    const uint32_t y = reverse_bits32(laine_karras_permutation(sobol_dimension1_reversed(index), seeds.scramble_y));
+    return {owen_scrambled_sobol_x(index, seeds), fraction_to_float(y)};
+}
 inline SobolPoint owen_scrambled_sobol(uint32_t index, const SobolSeeds& seeds) {
-    const uint32_t shuffled = shuffled_index(index, seeds);
-    const uint32_t y = reverse_bits32(laine_karras_permutation(sobol_dimension1_reversed(shuffled), seeds.scramble_y));
-    return {owen_scrambled_sobol_x(shuffled, seeds), fraction_to_float(y)};
+    return owen_scrambled_sobol_unshuffled(shuffled_index(index, seeds), seeds);
 }
 
 }  // namespace wt
