@@ -23,7 +23,7 @@ render-mesh: configure
 
 # The converged reference the error tools compare against (scenes/reference/, committed): the
 # hexroom at 200x200, two independent halves of 4096 spp with every accurate option; it prints
-# its own noise. About 3-6 minutes on 2 cores. See README, "Error against a reference".
+# its own noise. About 3 minutes on a quiet 2-core machine. See README, "Error against a reference".
 REFERENCE ?= scenes/reference/hexroom_200x200.exr
 reference: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
