@@ -97,7 +97,7 @@ void print_table(std::ostream& out, const std::vector<Configuration>& configurat
     const std::string target = "<" + seconds_text(target_rmse) + ")";
     out << std::left << std::setw(30) << "configuration" << std::right << std::setw(6) << "spp" << std::setw(9) << "time(s)"
         << std::setw(10) << "RMSE" << std::setw(10) << "relMSE" << std::setw(11) << "efficiency" << std::setw(8) << "slope"
-        << std::setw(11) << "floor_RMSE" << std::setw(14) << ("spp(RMSE" + target) << std::setw(12) << ("t(RMSE" + target)
+        << std::setw(12) << "floor_RMSE" << std::setw(17) << ("spp(RMSE" + target) << std::setw(15) << ("t(RMSE" + target)
         << "  pareto\n";
     for (std::size_t i = 0; i < configurations.size(); ++i) {
         const ConfigurationSummary& s = summaries[i];
@@ -106,8 +106,8 @@ void print_table(std::ostream& out, const std::vector<Configuration>& configurat
         out << std::left << std::setw(30) << configurations[i].name << std::right << std::setw(6) << m.spp << std::fixed
             << std::setprecision(3) << std::setw(9) << m.seconds << std::defaultfloat << std::setprecision(4)
             << std::setw(10) << m.error.rmse << std::setw(10) << m.error.rel_mse << std::setw(11) << efficiency
-            << std::setprecision(3) << std::setw(8) << s.fit.slope << std::setw(11) << std::sqrt(s.fit.floor)
-            << std::setw(14) << count_text(s.spp_to(target_rmse)) << std::setw(12) << seconds_text(s.seconds_to(target_rmse))
+            << std::setprecision(3) << std::setw(8) << s.fit.slope << std::setw(12) << std::sqrt(s.fit.floor)
+            << std::setw(17) << count_text(s.spp_to(target_rmse)) << std::setw(15) << seconds_text(s.seconds_to(target_rmse))
             << "  " << (s.on_front ? "yes" : "") << "\n";
     }
 }
