@@ -3,11 +3,12 @@
 #   make test     install what is missing, build, run the whole test suite (with the
 #                 instruction-count performance gate; not the `long` statistical tests)
 BUILD_DIR ?= build
+MPI_BUILD_DIR ?= build-mpi
 JOBS ?= $(shell nproc)
 SCENE ?= scenes/hexroom.json
 RENDER_DIR ?= renders
 
-.PHONY: render render-mesh reference tradeoff spp-series test test-long bench bench-deps perf-gate perf-gate-update build deps configure clean
+.PHONY: render render-mesh reference tradeoff spp-series test test-long test-mpi bench bench-deps perf-gate perf-gate-update build deps configure clean
 
 render: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
@@ -51,6 +52,14 @@ test: build
 
 test-long: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -L long
+
+# The render over MPI ranks (mpirun -np 2 and 3 against one process and a merged split, a
+# killed rank): OpenMPI installed, its own build directory with -DWAVETRACE_MPI=ON.
+test-mpi: deps
+	tools/install-deps.sh libopenmpi-dev openmpi-bin
+	cmake -S . -B $(MPI_BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DWAVETRACE_MPI=ON
+	cmake --build $(MPI_BUILD_DIR) -j $(JOBS) --target wavetrace
+	cd $(MPI_BUILD_DIR) && ctest --output-on-failure -L mpi
 
 # The benchmarks also install their own optional packages (Embree, the real model) and write
 # the benchmark mesh files (build/bench-data) first.

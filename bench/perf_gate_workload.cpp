@@ -8,7 +8,8 @@
 //                                                   of the hexroom plus a 9,800-triangle displaced sphere;
 //                                                   bvhpackets: the same, in packets of the ISA's width
 //   perf_gate_workload SCENE build                  building that BVH on one thread
-//   perf_gate_workload SCENE render ISA             a 24x24, 2 spp hexroom render on one thread
+//   perf_gate_workload SCENE render ISA [AOVS]      a 24x24, 2 spp hexroom render on one thread; with
+//                                                   AOVS (an --aov list: "all"), rendering those too
 
 #include <cstdio>
 #include <cstring>
@@ -18,6 +19,7 @@
 
 #include <valgrind/callgrind.h>
 
+#include "core/film/aov.h"
 #include "core/film/film.h"
 #include "core/scene.h"
 #include "core/scene_file/scene_loader.h"
@@ -57,7 +59,7 @@ Rays incoherent_rays(uint32_t count) {
 int usage() {
     std::fprintf(stderr, "usage: perf_gate_workload SCENE intersect ISA raypacket|primpacket|bvh|bvhpackets closest|any\n"
                          "       perf_gate_workload SCENE build\n"
-                         "       perf_gate_workload SCENE render ISA\n");
+                         "       perf_gate_workload SCENE render ISA [AOV,...]\n");
     return 2;
 }
 
@@ -89,12 +91,13 @@ int main(int argc, char** argv) {
     }
     SceneDescription description = load_scene_file(scene_path);
 
-    if (what == "render" && argc == 4) {
+    if (what == "render" && (argc == 4 || argc == 5)) {
         description.settings.width = description.settings.height = 24;
         description.settings.spp = 2;
         const Scene scene = build_scene(description);
-        Film film(24, 24);
         RenderOptions options;
+        if (argc == 5) options.aovs = parse_aov_list(argv[4]);
+        Film film(24, 24, aov_film_channels(options.aovs));
         options.threads = 1;
         options.isa = *isa;
         CALLGRIND_TOGGLE_COLLECT;

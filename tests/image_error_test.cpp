@@ -105,8 +105,8 @@ TEST(ImageError, RefusesMismatchedSizesAndEmptyMasks) {
     EXPECT_THROW(image_error(uniform(2, 2, 0.0f), uniform(2, 2, 0.0f), &short_mask), std::invalid_argument);
 }
 
-// A mask keeping a rectangle must give what OpenImageIO's compare gives over that rectangle: the
-// rescaling from all pixels to the kept ones is ours, the rectangle's sums are OpenImageIO's.
+// A mask keeping a rectangle must give what OpenImageIO's compare gives over that rectangle, and
+// no mask what it gives over the whole image (our sums are our own: core does not link it).
 TEST(ImageError, MaskedRectangleAgreesWithOpenImageIOCompareOverItsROI) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> value(0.0f, 2.0f);
@@ -125,8 +125,9 @@ TEST(ImageError, MaskedRectangleAgreesWithOpenImageIOCompareOverItsROI) {
     const auto oiio = OIIO::ImageBufAlgo::compare(A, B, never, never, 0.0f, 0.0f, rect, 1);
     ASSERT_FALSE(oiio.error);
     EXPECT_EQ(r.pixels, 12u);
-    EXPECT_NEAR(r.overall.rmse, oiio.rms_error, 1e-12 * oiio.rms_error);
-    EXPECT_NEAR(r.overall.psnr, 20.0 * std::log10(1.0 / oiio.rms_error), 1e-9);  // ours has peak 1, OpenImageIO's the brightest value
+    // OpenImageIO takes the differences in float, we in double: equal to float rounding.
+    EXPECT_NEAR(r.overall.rmse, oiio.rms_error, 1e-6 * oiio.rms_error);
+    EXPECT_NEAR(r.overall.psnr, 20.0 * std::log10(1.0 / oiio.rms_error), 1e-5);  // ours has peak 1, OpenImageIO's the brightest value
     EXPECT_EQ(r.overall.max_error, oiio.maxerror);
     EXPECT_EQ(r.overall.max_x, oiio.maxx);
     EXPECT_EQ(r.overall.max_y, oiio.maxy);
@@ -135,7 +136,7 @@ TEST(ImageError, MaskedRectangleAgreesWithOpenImageIOCompareOverItsROI) {
     // And the whole image: every metric of ours that OpenImageIO also computes.
     const ImageErrorReport whole = image_error(a, b);
     const auto all = OIIO::ImageBufAlgo::compare(A, B, never, never, 0.0f, 0.0f, OIIO::ROI(), 1);
-    EXPECT_NEAR(whole.overall.rmse, all.rms_error, 1e-12 * all.rms_error);
+    EXPECT_NEAR(whole.overall.rmse, all.rms_error, 1e-6 * all.rms_error);
     double squares = 0.0;
     for (std::size_t i = 0; i < a.rgb.size(); ++i) squares += double(a.rgb[i] - b.rgb[i]) * double(a.rgb[i] - b.rgb[i]);
     EXPECT_NEAR(whole.overall.rmse, std::sqrt(squares / double(a.rgb.size())), 1e-6);

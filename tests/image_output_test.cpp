@@ -1,13 +1,15 @@
-// Image files: the right encoding per extension, read back through OpenImageIO, and no
-// half-written or temporary files left behind by a failure.
+// Image files: the right encoding per extension, read back through the image I/O module
+// (read_image), AOV layers and metadata, and no half-written or temporary files left behind by
+// a failure.
 
+#include <cmath>
 #include <filesystem>
 #include <unistd.h>
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include "core/film/image_output.h"
+#include "core/image_io/image_input.h"
 
 namespace wt {
 namespace {
@@ -28,26 +30,28 @@ protected:
 
 const std::vector<float> kPixels = {0.0f, 0.5f, 1.0f, 2.0f, 0.001f, 0.18f};  // 2x1 RGB
 
+// 8-bit values of an image read back (read_image gives them as value / 255).
+std::vector<int> bytes_of(const ImageData& image) {
+    std::vector<int> bytes;
+    for (float v : image.pixels) bytes.push_back(int(std::lround(v * 255.0f)));
+    return bytes;
+}
+
 TEST_F(ImageOutput, ExrKeepsLinearFloatRadiance) {
     write_image(path("a.exr"), 2, 1, kPixels);
-    auto in = OIIO::ImageInput::open(path("a.exr"));
-    ASSERT_TRUE(in);
-    EXPECT_EQ(in->spec().width, 2);
-    EXPECT_EQ(in->spec().nchannels, 3);
-    EXPECT_EQ(in->spec().format, OIIO::TypeDesc::FLOAT);
-    std::vector<float> back(6);
-    ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, back.data()));
-    EXPECT_EQ(back, kPixels);  // 2.0 above white survives
+    const ImageData in = read_image(path("a.exr"));
+    EXPECT_EQ(in.width, 2);
+    EXPECT_EQ(in.height, 1);
+    EXPECT_EQ(in.channels, (std::vector<std::string>{"R", "G", "B"}));
+    EXPECT_EQ(in.pixels, kPixels);  // 2.0 above white survives
     EXPECT_EQ(files_in_dir(), 1u);
 }
 
 TEST_F(ImageOutput, PngIsSrgbEncodedAndClamped) {
     write_image(path("a.png"), 2, 1, kPixels);
-    auto in = OIIO::ImageInput::open(path("a.png"));
-    ASSERT_TRUE(in);
-    EXPECT_EQ(in->spec().format, OIIO::TypeDesc::UINT8);
-    std::vector<uint8_t> back(6);
-    ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, back.data()));
+    const ImageData in = read_image(path("a.png"));
+    EXPECT_EQ(in.channels.size(), 3u);
+    const std::vector<int> back = bytes_of(in);
     EXPECT_EQ(back[0], 0);
     EXPECT_EQ(back[1], 188);  // sRGB(0.5) = 0.7354
     EXPECT_EQ(back[2], 255);
@@ -81,9 +85,7 @@ TEST_F(ImageOutput, ReplacingAnImageIsAtomicAndLeavesNoTemporaryFile) {
     write_image(path("a.png"), 2, 1, kPixels);
     write_image(path("a.png"), 2, 1, std::vector<float>(6, 0.25f));
     EXPECT_EQ(files_in_dir(), 1u);
-    auto in = OIIO::ImageInput::open(path("a.png"));
-    std::vector<uint8_t> back(6);
-    ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, back.data()));
+    const std::vector<int> back = bytes_of(read_image(path("a.png")));
     EXPECT_EQ(back[0], back[5]);
 }
 
@@ -93,6 +95,69 @@ TEST_F(ImageOutput, FailedWriteLeavesNeitherTargetNorTemporary) {
     fs::create_directories(path("blocked.png/x"));
     EXPECT_THROW(write_image(path("blocked.png"), 2, 1, kPixels), ImageError);
     EXPECT_EQ(files_in_dir(), 1u);  // just the blocking directory
+}
+
+const ImageMetadata kMetadata{64, 18446744073709551615ull, "0123456789abcdef", 1.5, "9.8.7"};
+
+// The wavetrace: attributes, as text whatever their type in the file.
+void expect_metadata_of_kMetadata(const ImageData& in) {
+    EXPECT_EQ(in.attribute("wavetrace:spp"), "64");
+    EXPECT_EQ(in.attribute("wavetrace:seed"), "18446744073709551615");
+    EXPECT_EQ(in.attribute("wavetrace:scene_hash"), "0123456789abcdef");
+    EXPECT_EQ(in.attribute("wavetrace:render_seconds"), "1.5");
+    EXPECT_EQ(in.attribute("wavetrace:version"), "9.8.7");
+}
+
+TEST_F(ImageOutput, ExrHoldsTheLayersAfterTheBeautyAndTheMetadata) {
+    const ImageChannels layers{{"albedo.R", "albedo.G", "albedo.B", "Z"}, {0.1f, 0.2f, 0.3f, 4.0f, 0.5f, 0.6f, 0.7f, INFINITY}};
+    write_image(path("a.exr"), 2, 1, kPixels, &kMetadata, &layers);
+    const ImageData in = read_image(path("a.exr"));
+    ASSERT_EQ(in.channels.size(), 7u);
+    for (const char* c : {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B", "Z"}) EXPECT_GE(in.channel_index(c), 0) << c;
+    EXPECT_EQ(in.value("R", 1, 0), 2.0f);
+    EXPECT_EQ(in.value("albedo.G", 0, 0), 0.2f);
+    EXPECT_EQ(in.value("albedo.B", 1, 0), 0.7f);
+    EXPECT_EQ(in.value("Z", 0, 0), 4.0f);
+    EXPECT_EQ(in.value("Z", 1, 0), INFINITY);
+    expect_metadata_of_kMetadata(in);
+    EXPECT_EQ(in.attribute("Software"), "wavetrace 9.8.7");
+}
+
+TEST_F(ImageOutput, PngHoldsTheMetadataAsTextAndTheBeautyOnly) {
+    const ImageChannels layers{{"Z"}, {4.0f, 5.0f}};
+    write_image(path("a.png"), 2, 1, kPixels, &kMetadata, &layers);
+    write_image(path("plain.png"), 2, 1, kPixels);
+    const ImageData in = read_image(path("a.png"));
+    EXPECT_EQ(in.channels, (std::vector<std::string>{"R", "G", "B"}));
+    EXPECT_EQ(bytes_of(in), bytes_of(read_image(path("plain.png"))));  // the pixels do not change with metadata
+    expect_metadata_of_kMetadata(in);
+}
+
+TEST_F(ImageOutput, JpegHoldsTheMetadataInItsDescription) {
+    write_image(path("a.jpg"), 2, 1, kPixels, &kMetadata);
+    const ImageData in = read_image(path("a.jpg"));
+    EXPECT_EQ(in.attribute("Software"), "wavetrace 9.8.7");
+    EXPECT_EQ(in.attribute("ImageDescription"),
+              "wavetrace 9.8.7: 64 spp, seed 18446744073709551615, scene hash 0123456789abcdef, rendered in 1.5 s");
+}
+
+TEST_F(ImageOutput, ReadingAMissingOrBrokenFileNamesIt) {
+    try {
+        read_image(path("none.exr"));
+        FAIL() << "read a missing file";
+    } catch (const ImageError& e) {
+        EXPECT_NE(std::string(e.what()).find("none.exr"), std::string::npos) << e.what();
+    }
+    std::FILE* f = std::fopen(path("broken.exr").c_str(), "wb");
+    std::fputs("not an image", f);
+    std::fclose(f);
+    EXPECT_THROW(read_image(path("broken.exr")), ImageError);
+}
+
+TEST_F(ImageOutput, LayersOfTheWrongSizeAreRefused) {
+    const ImageChannels layers{{"Z"}, {4.0f}};
+    EXPECT_THROW(write_image(path("a.exr"), 2, 1, kPixels, &kMetadata, &layers), ImageError);
+    EXPECT_EQ(files_in_dir(), 0u);
 }
 
 }  // namespace

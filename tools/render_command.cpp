@@ -9,15 +9,23 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/film/aov.h"
+#include "core/film/checkpoint.h"
 #include "core/film/film.h"
 #include "core/film/image_output.h"
 #include "core/scene.h"
 #include "core/scene_file/scene_loader.h"
+#include "core/scene_hash.h"
 #include "debug_sample.h"
 #include "interrupt.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/progressive_render.h"
 #include "progress_display.h"
+#include "render_checkpoint.h"
+#if WAVETRACE_MPI
+#include "mpi_render.h"
+#include "mpi_render_command.h"
+#endif
 #include "render_passes.h"
 #include "render_summary.h"
 
@@ -67,6 +75,29 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::PositiveNumber);
     cmd->add_option("--write-every", o.write_every, "Also write the outputs every SECONDS, at pass boundaries")
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--checkpoint", o.checkpoint,
+                    "Save the render's state to FILE (.ckpt) every --checkpoint-every seconds, at the end and when "
+                    "interrupted, for --resume (default with --resume: the resumed file)");
+    cmd->add_option("--checkpoint-every", o.checkpoint_every, "Seconds between checkpoints (default 300)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--resume", o.resume,
+                    "Continue the render saved in FILE, to its spp or to a larger --spp; the scene and settings must "
+                    "be those it was started with");
+    cmd->add_option("--samples", o.samples,
+                    "BEGIN:END: render only samples BEGIN to END-1 of every pixel, a part of a split render for "
+                    "`wavetrace merge` (default output: SCENE.BEGIN-END.ckpt)");
+    cmd->add_option("--aov", o.aov_list,
+                    "Extra layers in .exr outputs, comma-separated: albedo, normal, depth, variance, samples, or all")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                try {
+                    parse_aov_list(text);
+                    return std::string();
+                } catch (const std::invalid_argument& e) {
+                    return std::string(e.what());
+                }
+            },
+            "AOV,...", "AOV list"));
     add_reference_error_options(*cmd, o.error);
     cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but errors (no progress, no summary)");
     return cmd;
@@ -96,10 +127,10 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.clamp_indirect) s.estimator.clamp_indirect = *o.clamp_indirect;
 }
 
-// Resolves the film and writes every output; a failure is an ImageError naming the file.
-void write_outputs(const std::vector<std::string>& outputs, const Film& film) {
-    const std::vector<float> rgb = film.resolve();
-    for (const std::string& out : outputs) write_image(out, film.width(), film.height(), rgb);
+std::string default_output(const RenderCommandOptions& o, SampleRange part) {
+    const std::string stem = std::filesystem::path(o.scene_path).stem().string();
+    if (!o.samples) return stem + ".png";
+    return stem + "." + std::to_string(part.begin) + "-" + std::to_string(part.end) + ".ckpt";
 }
 
 }  // namespace
@@ -110,6 +141,24 @@ int run_render_command(RenderCommandOptions& o) {
         if (!o.quiet)
             for (const std::string& note : description.notes) std::cerr << "wavetrace: note: " << note << "\n";
         apply_overrides(o, description.settings);
+        if (o.resume && o.samples) throw std::runtime_error("--resume continues the range it holds: no --samples with it");
+        // A partial render's samples; otherwise [0, spp).
+        const SampleRange part = o.samples ? parse_sample_range(*o.samples) : SampleRange{};
+        const uint64_t scene_hash = scene_content_hash(description);
+        if (!o.aov_list.empty()) o.render.aovs = parse_aov_list(o.aov_list);  // the CLI checked it
+        const std::vector<std::string> film_channels = aov_film_channels(o.render.aovs);
+        std::optional<Checkpoint> resumed;
+        if (o.resume) {
+            RenderSettings& s = description.settings;
+            // The AOVs are part of the film: a resume asks for the ones the checkpoint holds.
+            resumed = checkpoint_to_resume(*o.resume, scene_hash, s, {s.width, s.height, film_channels});
+            const CheckpointHeader& h = resumed->header;
+            if (!o.spp && h.first_sample == 0) s.spp = int(h.target_sample);
+            if (o.spp && uint32_t(*o.spp) < h.next_sample)
+                throw std::runtime_error("--spp " + std::to_string(*o.spp) + ": " + *o.resume + " holds samples up to " +
+                                         std::to_string(h.next_sample) + " already");
+            if (!o.checkpoint) o.checkpoint = *o.resume;
+        }
         const RenderSettings settings = description.settings;
         const Scene scene = build_scene(description);
         description = SceneDescription();  // a big mesh's vertices and indices are in the scene now
@@ -118,9 +167,18 @@ int run_render_command(RenderCommandOptions& o) {
         if (o.debug_sample)
             return replay_sample(scene, o.render, parse_debug_sample(*o.debug_sample, settings.width, settings.height));
 
-        if (o.outputs.empty()) o.outputs.push_back(std::filesystem::path(o.scene_path).stem().string() + ".png");
-        for (const std::string& out : o.outputs) check_output_path(out);
-        const double film_bytes = Film::bytes_needed(settings.width, settings.height);
+        if (o.outputs.empty()) o.outputs.push_back(default_output(o, part));
+#if WAVETRACE_MPI
+        if (MpiJob::active()) check_mpi_render_options(o);
+#endif
+        for (const std::string& out : o.outputs)
+            if (is_checkpoint_path(out)) check_checkpoint_path(out, "-o");
+            else check_output_path(out);
+        if (o.checkpoint) check_checkpoint_path(*o.checkpoint, "--checkpoint");
+        if (!std::all_of(o.outputs.begin(), o.outputs.end(), is_checkpoint_path)) check_image_writer_available();
+        if (o.render.aovs.any() && !o.quiet && std::none_of(o.outputs.begin(), o.outputs.end(), holds_layers))
+            std::cerr << "wavetrace: note: --aov layers are written to .exr outputs only, and none was given\n";
+        const double film_bytes = Film::bytes_needed(settings.width, settings.height, film_channels.size());
         const double memory = physical_memory_bytes();
         if (memory > 0.0 && film_bytes > 0.5 * memory) {
             std::ostringstream msg;
@@ -136,41 +194,72 @@ int run_render_command(RenderCommandOptions& o) {
         }
         ReferenceErrorLog error_log(o.error, settings.width, settings.height);
         RenderSession session(scene, o.render);
-        Film film(settings.width, settings.height);
+#if WAVETRACE_MPI
+        if (MpiJob::active())
+            return run_render_on_mpi_ranks(o, session, scene, checkpoint_header_for(scene_hash, settings, {0, 0}, 0));
+#endif
+        // The samples [first, next) the film holds, and [next, target) still to render.
+        const uint32_t first = resumed ? resumed->header.first_sample : part.begin;
+        const uint32_t next = resumed ? resumed->header.next_sample : first;
+        const uint32_t target = o.samples ? part.end
+                                : o.spp || !resumed ? uint32_t(settings.spp)
+                                                    : resumed->header.target_sample;
+        Film film = resumed ? std::move(resumed->film) : Film(settings.width, settings.height, film_channels);
+        resumed.reset();
+        const auto header_at = [&](uint32_t next_sample) {
+            return checkpoint_header_for(scene_hash, settings, {first, next_sample}, target);
+        };
 
         ProgressiveOptions passes;
-        passes.samples = {0, uint32_t(settings.spp)};
+        passes.samples = {next, target};
+        passes.film_first_sample = first;
         passes.time_limit = o.time_limit.value_or(0.0);
-        // Short enough that Ctrl-C, --write-every and the time limit are answered promptly.
-        passes.pass_seconds = std::min(2.0, o.write_every.value_or(2.0));
+        // Short enough that Ctrl-C, --write-every, checkpoints and the time limit are answered promptly.
+        passes.pass_seconds = std::min({2.0, o.write_every.value_or(2.0), o.checkpoint ? o.checkpoint_every : 2.0});
         passes.stop = &interrupt_requested();
-        ProgressDisplay progress(progress_style_for_stderr(o.quiet), film.pixel_total(), 0, uint32_t(settings.spp),
+        ProgressDisplay progress(progress_style_for_stderr(o.quiet), film.pixel_total(), next - first, target - first,
                                  passes.time_limit);
         RenderPassHooks hooks(progress);
         if (o.write_every)
-            hooks.every(*o.write_every, [&](const Film& current, const PassReport&) {
+            hooks.every(*o.write_every, [&](const Film& current, const PassReport& report) {
                 try {
-                    write_outputs(o.outputs, current);
+                    const CheckpointHeader header = header_at(report.pass_samples.end);
+                    write_render_outputs(o.outputs, current, header, o.render.aovs, image_metadata_for(header, report.seconds));
                 } catch (const std::exception& e) {
                     // The previous images stay in place; the render goes on and tries again later.
                     std::cerr << "wavetrace: warning: " << e.what() << " (rendering continues)\n";
                 }
+            });
+        if (o.checkpoint)
+            hooks.every(o.checkpoint_every, [&](const Film& current, const PassReport& report) {
+                try_write_checkpoint(*o.checkpoint, header_at(report.pass_samples.end), current, !o.quiet);
             });
         error_log.attach(hooks, session, o.quiet ? nullptr : &std::cerr);
         install_interrupt_handlers();
         const ProgressiveResult passes_done = render_progressive(session, film, passes, &hooks);
         progress.finish();
 
-        write_outputs(o.outputs, film);
+        // The checkpoint first, so a render whose image cannot be written can still be resumed;
+        // the images even when the checkpoint cannot be, so the samples are not all lost.
+        const CheckpointHeader final_header = header_at(passes_done.end_sample);
+        const bool checkpointed = !o.checkpoint || try_write_checkpoint(*o.checkpoint, final_header, film, false);
+        write_render_outputs(o.outputs, film, final_header, o.render.aovs,
+                             image_metadata_for(final_header, session.result().seconds));
+        if (!checkpointed) throw std::runtime_error(*o.checkpoint + ": the final checkpoint could not be written (the images were)");
         if (!o.quiet) {
+            std::vector<std::string> written = o.outputs;
+            if (o.checkpoint) written.push_back(*o.checkpoint);
             RenderSummary summary{o.scene_path, o.integrator_name, &scene, &o.render, session.result(), passes_done,
-                                  passes_done.end_sample, o.outputs};
+                                  passes_done.end_sample - first, written};
             print_render_summary(std::cout, summary);
         }
-        error_log.finish(session.result().seconds, passes_done.end_sample, film, o.quiet ? nullptr : &std::cout);
+        error_log.finish(session.result().seconds, passes_done.end_sample - first, film, o.quiet ? nullptr : &std::cout);
         return passes_done.reason == StopReason::interrupted ? exit_interrupted : 0;
     } catch (const std::exception& e) {
         std::cerr << "wavetrace: error: " << e.what() << "\n";
+#if WAVETRACE_MPI
+        if (MpiJob::active()) MpiJob::abort(1);  // the other ranks would wait for this one forever
+#endif
         return 1;
     }
 }

@@ -27,6 +27,9 @@ struct RenderCommandOptions {
     std::string accel_name = "auto";
     std::optional<std::string> debug_sample;  // "X,Y,S": replay one sample instead of rendering
     std::optional<double> time_limit, write_every;  // seconds
+    std::optional<std::string> checkpoint, resume, samples;  // samples: "BEGIN:END", a partial render
+    double checkpoint_every = 300.0;                         // seconds
+    std::string aov_list;                           // --aov: "albedo,normal,..." or "all"; empty: none
     ReferenceErrorOptions error;                    // --reference, --error-csv
     bool quiet = false;
 };

@@ -1,16 +1,41 @@
 // wavetrace: the command-line front end. Subcommands live in their own files.
 
+#include <signal.h>
+
+#include <cstdio>
+#include <cstdlib>
+
 #include <CLI/CLI.hpp>
 
 #include "compare_command.h"
+#include "merge_command.h"
 #include "render_command.h"
 #include "tradeoff_command.h"
+#if WAVETRACE_MPI
+#include "mpi_render.h"
+#endif
 
 int main(int argc, char** argv) {
+#if WAVETRACE_MPI
+    wt::MpiJob mpi(argc, argv);  // only when started by mpirun with several ranks
+#else
+    // Under mpirun each rank would render the whole image and write the same files.
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+        if (const char* ranks = std::getenv(name); ranks && std::atoi(ranks) > 1) {
+            std::fprintf(stderr, "wavetrace: error: started as one of %s MPI ranks, but built without MPI "
+                                 "(configure with -DWAVETRACE_MPI=ON)\n", ranks);
+            return 1;
+        }
+#endif
+    // A file size limit (ulimit -f) makes a write fail with EFBIG, reported like a full disk;
+    // by default it would kill the process in the middle of a long render instead.
+    signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"wavetrace: a wavefront Monte Carlo path tracer for the CPU"};
     app.require_subcommand(1);
     wt::RenderCommandOptions render_options;
     CLI::App* render = wt::add_render_command(app, render_options);
+    wt::MergeCommandOptions merge_options;
+    CLI::App* merge = wt::add_merge_command(app, merge_options);
     const std::vector<wt::Subcommand> subcommands = {wt::compare_subcommand(app), wt::tradeoff_subcommand(app)};
     try {
         app.parse(argc, argv);
@@ -18,6 +43,7 @@ int main(int argc, char** argv) {
         return app.exit(e);
     }
     if (render->parsed()) return wt::run_render_command(render_options);
+    if (merge->parsed()) return wt::run_merge_command(merge_options);
     for (const wt::Subcommand& s : subcommands)
         if (s.app->parsed()) return s.run();
     return 1;

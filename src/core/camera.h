@@ -26,6 +26,8 @@ public:
     }
 
     const glm::vec3& eye() const { return eye_; }
+    // Unit vector along the view axis (towards look_at).
+    const glm::vec3& forward() const { return forward_; }
 
     // film_x in [0, width), film_y in [0, height), (0,0) the top-left corner of the image.
     Ray generate_ray(float film_x, float film_y) const {

@@ -10,7 +10,7 @@ namespace {
 
 template <typename E>
 glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
-                     std::vector<PathVertexRecord>* record, const BvhView* bvh) {
+                     std::vector<PathVertexRecord>* record, const BvhView* bvh, FirstSurface* first_surface) {
     const AccuracySettings& accuracy = scene.settings.accuracy;
     auto closest = [&](const Ray& r) { return bvh ? bvh_intersect_closest(*bvh, accuracy, r) : intersect_closest(scene, r); };
     auto blocked = [&](const Ray& r, float tmax) {
@@ -30,6 +30,8 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
         if (!hit.found()) break;  // no environment light
         const SurfacePoint surface = surface_at(scene, ray, hit);
         const Material& m = scene.materials[surface.material];
+        if (first_surface && !first_surface->found)
+            record_first_surface(*first_surface, scene.camera, bounce, ray, hit, surface, m, throughput);
         PathVertexRecord vertex{bounce, hit, surface.position, surface.normal, surface.shading_normal, surface.material,
                                 throughput, glm::vec3(0.0f), 0, 0, glm::vec3(0.0f)};
 
@@ -64,14 +66,18 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
 
 template <typename E>
 void render_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
-                 RayCounts& counts, const BvhView* bvh) {
+                 RayCounts& counts, const BvhView* bvh, const AovSelection& aovs) {
+    const bool with_aovs = aovs.needs_path_data();
     for (int y = tile.y0; y < tile.y1; ++y) {
         for (int x = tile.x0; x < tile.x1; ++x) {
             const uint32_t pixel = uint32_t(y) * uint32_t(scene.settings.width) + uint32_t(x);
             for (uint32_t s = sample_begin; s < sample_end; ++s) {
-                const glm::vec3 radiance = trace_path<E>(scene, pixel, s, counts, nullptr, bvh);
+                FirstSurface first;
+                const glm::vec3 radiance = trace_path<E>(scene, pixel, s, counts, nullptr, bvh, with_aovs ? &first : nullptr);
                 ++counts.samples;
-                if (!film.add_sample(pixel, radiance)) ++counts.nonfinite_samples;
+                float extra[Film::max_extra_channels];
+                if (with_aovs) aov_sample_values(aovs, first, extra);
+                if (!film.add_sample(pixel, radiance, with_aovs ? extra : nullptr)) ++counts.nonfinite_samples;
             }
         }
     }
@@ -80,16 +86,16 @@ void render_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, ui
 }  // namespace
 
 glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
-                               std::vector<PathVertexRecord>* record, const BvhView* bvh) {
+                               std::vector<PathVertexRecord>* record, const BvhView* bvh, FirstSurface* first_surface) {
     return with_estimator(scene.settings.estimator, [&](auto estimator) {
-        return trace_path<decltype(estimator)>(scene, pixel, sample, counts, record, bvh);
+        return trace_path<decltype(estimator)>(scene, pixel, sample, counts, record, bvh, first_surface);
     });
 }
 
 void render_reference_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
-                           RayCounts& counts, const BvhView* bvh) {
+                           RayCounts& counts, const BvhView* bvh, const AovSelection& aovs) {
     with_estimator(scene.settings.estimator, [&](auto estimator) {
-        render_tile<decltype(estimator)>(scene, tile, sample_begin, sample_end, film, counts, bvh);
+        render_tile<decltype(estimator)>(scene, tile, sample_begin, sample_end, film, counts, bvh, aovs);
     });
 }
 

@@ -8,7 +8,9 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/film/aov.h"
 #include "core/film/film.h"
+#include "core/first_surface.h"
 #include "core/scene.h"
 #include "kernels/accel/bvh_view.h"
 #include "kernels/render_stats.h"
@@ -30,12 +32,14 @@ struct PathVertexRecord {
 
 // Radiance of sample `sample` of pixel `pixel`. If `record` is given, each vertex is appended.
 // Rays are traced through `bvh` when given (the scalar kernels: the same hits as the flat
-// loops, found in logarithmic time), else against every primitive.
+// loops, found in logarithmic time), else against every primitive. If `first_surface` is
+// given (default-constructed), the path's AOV data is recorded in it.
 glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
-                               std::vector<PathVertexRecord>* record = nullptr, const BvhView* bvh = nullptr);
+                               std::vector<PathVertexRecord>* record = nullptr, const BvhView* bvh = nullptr,
+                               FirstSurface* first_surface = nullptr);
 
-// Samples [sample_begin, sample_end) of every pixel of the tile.
+// Samples [sample_begin, sample_end) of every pixel of the tile, with the AOVs the film has channels for.
 void render_reference_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
-                           RayCounts& counts, const BvhView* bvh = nullptr);
+                           RayCounts& counts, const BvhView* bvh = nullptr, const AovSelection& aovs = {});
 
 }  // namespace wt

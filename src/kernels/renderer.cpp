@@ -46,6 +46,8 @@ RenderSession::~RenderSession() = default;
 void RenderSession::render_samples(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done) {
     if (film.width() != scene_.settings.width || film.height() != scene_.settings.height)
         throw std::invalid_argument("render: film resolution does not match the scene's");
+    if (film.extra_channels() != aov_film_channels(options_.aovs))
+        throw std::invalid_argument("render: the film's extra channels are not those of the AOVs requested");
     if (range.end <= range.begin) return;
     const BvhView* tree = accel_ == Accel::bvh ? &bvh_tree_ : nullptr;
     const IntersectContext context{scene_view(scene_), kernels_, tree};
@@ -55,7 +57,7 @@ void RenderSession::render_samples(Film& film, SampleRange range, const std::fun
         const Tile& tile = tiles_[item];
         RayCounts& c = counts_[std::size_t(worker)];
         if (options_.integrator == Integrator::reference) {
-            render_reference_tile(scene_, tile, range.begin, range.end, film, c, tree);
+            render_reference_tile(scene_, tile, range.begin, range.end, film, c, tree, options_.aovs);
         } else {
             auto& ws = workspaces_[std::size_t(worker)];
             if (!ws) {
@@ -64,9 +66,11 @@ void RenderSession::render_samples(Film& film, SampleRange range, const std::fun
                 const std::size_t tile_pixels =
                     std::min(image_pixels, std::size_t(options_.tile_size) * std::size_t(options_.tile_size));
                 const std::size_t capacity = std::max(options_.batch_paths, tile_pixels);
-                ws = std::make_unique<WavefrontWorkspace>(capacity, std::size_t(scene_.settings.shadow_rays));
+                ws = std::make_unique<WavefrontWorkspace>(capacity, std::size_t(scene_.settings.shadow_rays),
+                                                          options_.aovs.needs_path_data());
             }
-            render_wavefront_tile(scene_, context, tile, range.begin, range.end, options_.batch_paths, *ws, film, c);
+            render_wavefront_tile(scene_, context, tile, range.begin, range.end, options_.batch_paths, options_.aovs, *ws,
+                                  film, c);
         }
         if (tile_done) tile_done(uint64_t(tile.pixel_count()) * range.size());
     });

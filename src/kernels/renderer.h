@@ -12,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/film/aov.h"
 #include "core/film/film.h"
 #include "core/scene.h"
 #include "core/thread_pool.h"
@@ -34,6 +35,8 @@ struct RenderOptions {
     std::optional<Isa> isa;          // intersection kernels; empty: the best this CPU runs
     Accel accel = Accel::automatic;  // never changes the image, only how fast it comes
     BvhBuildOptions bvh;             // when a BVH is built (its `threads` is ignored: the render's are used)
+    // AOVs to render: the film must have exactly aov_film_channels(aovs) as its extra channels.
+    AovSelection aovs;
 };
 
 struct RenderResult {
@@ -61,10 +64,10 @@ public:
     RenderSession(const RenderSession&) = delete;
     RenderSession& operator=(const RenderSession&) = delete;
 
-    // Adds samples `range` of every pixel to the film (which must match the scene's
-    // resolution). Each pixel receives them in ascending order; since the film's sums are
-    // exact, the film ends the same bits however a render is cut into ranges, for any thread
-    // count, tile size and batch size. `tile_done(samples)`, if given, is called by the worker
+    // Adds samples `range` of every pixel to the film (which must match the scene's resolution
+    // and have the AOV channels of the options). Each pixel receives them in ascending order;
+    // since the film's sums are exact, the film ends the same bits however a render is cut into
+    // ranges, for any thread count, tile size and batch size. `tile_done(samples)`, if given, is called by the worker
     // that finished a tile with the number of samples it added: from several threads at once.
     void render_samples(Film& film, SampleRange range, const std::function<void(uint64_t samples)>& tile_done = {});
 

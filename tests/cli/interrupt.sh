@@ -4,12 +4,7 @@
 # boundary, writes the image and exits 3; two SIGINTs exit at once (130) and leave the image
 # that was already there untouched and no temporary file. The test waits for the render's own
 # "pass 1 done" line on stderr (through a FIFO), never for a fixed time.
-set -u
-wavetrace=$1
-scene=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; [ -f "$work/log" ] && cat "$work/log"; exit 1; }
+source "$(dirname "$0")/script_setup.sh"
 
 # Starts a long render whose stderr goes through a FIFO. A pass of one sample of 640x480
 # takes a good part of a second, long enough for a second signal to arrive during it.

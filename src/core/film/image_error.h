@@ -19,6 +19,7 @@ struct ErrorMetrics {
     double rel_mse = 0.0;
     // 20 log10(1 / rmse), +inf when equal. Peak 1 always, so PSNR is RMSE in decibels and compares
     // across images; OpenImageIO's compare takes the largest pixel value as the peak when it exceeds 1.
+    // RMSE and the worst pixel are computed as OpenImageIO's compare computes them (tested).
     double psnr = 0.0;
     double mean_ratio = 0.0;  // sum x / sum r: 1 for a render that is right on average; NaN if the reference sums to 0
     double max_error = 0.0;   // the worst |x - r|, at pixel (max_x, max_y) in channel max_channel

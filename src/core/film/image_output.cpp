@@ -7,10 +7,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-
-#include <OpenImageIO/imageio.h>
+#include <sstream>
 
 #include "core/atomic_file.h"
+#include "core/image_io/image_module.h"
 
 namespace wt {
 
@@ -24,6 +24,55 @@ std::string lowercase_extension(const std::string& path) {
     return ext;
 }
 
+// The attributes of the metadata, kept alive (the strings) for the module's call.
+struct Attributes {
+    std::vector<std::string> strings;
+    std::vector<WtImageAttribute> list;
+
+    void add_string(const char* name, std::string value) {
+        strings.push_back(std::move(value));
+        list.push_back({name, WT_ATTRIBUTE_STRING, nullptr, 0, 0.0f});
+    }
+    void add(const char* name, int value) { list.push_back({name, WT_ATTRIBUTE_INT, nullptr, value, 0.0f}); }
+    void add(const char* name, float value) { list.push_back({name, WT_ATTRIBUTE_FLOAT, nullptr, 0, value}); }
+    // Pointers into `strings` are taken only once it has stopped growing.
+    const WtImageAttribute* finish() {
+        std::size_t s = 0;
+        for (WtImageAttribute& a : list)
+            if (a.type == WT_ATTRIBUTE_STRING) a.string_value = strings[s++].c_str();
+        return list.data();
+    }
+};
+
+Attributes image_attributes(const std::string& ext, const ImageMetadata& m, ImageEncoding encoding) {
+    Attributes a;
+    a.add_string("oiio:ColorSpace", encoding == ImageEncoding::srgb_8bit ? "sRGB" : "Linear");
+    if (ext == ".hdr") return a;  // OpenImageIO's Radiance writer keeps none of the rest
+    std::ostringstream seconds;
+    seconds.precision(6);
+    seconds << m.render_seconds;
+    const std::string program = "wavetrace " + m.program_version;
+    a.add_string("Software", program);
+    a.add_string("ImageDescription", program + ": " + std::to_string(m.spp) + " spp, seed " + std::to_string(m.seed) +
+                                         ", scene hash " + m.scene_hash + ", rendered in " + seconds.str() + " s");
+    if (ext == ".exr") {
+        // Typed where the type fits; the seed is 64-bit, which EXR's int attribute is not.
+        a.add("wavetrace:spp", int(m.spp));
+        a.add_string("wavetrace:seed", std::to_string(m.seed));
+        a.add_string("wavetrace:scene_hash", m.scene_hash);
+        a.add("wavetrace:render_seconds", float(m.render_seconds));
+        a.add_string("wavetrace:version", m.program_version);
+    } else if (ext == ".png") {
+        // OpenImageIO writes string attributes as PNG text chunks under their names.
+        a.add_string("wavetrace:spp", std::to_string(m.spp));
+        a.add_string("wavetrace:seed", std::to_string(m.seed));
+        a.add_string("wavetrace:scene_hash", m.scene_hash);
+        a.add_string("wavetrace:render_seconds", seconds.str());
+        a.add_string("wavetrace:version", m.program_version);
+    }
+    return a;
+}
+
 }  // namespace
 
 ImageEncoding encoding_for_path(const std::string& path) {
@@ -32,6 +81,8 @@ ImageEncoding encoding_for_path(const std::string& path) {
     if (ext == ".png" || ext == ".jpg" || ext == ".jpeg") return ImageEncoding::srgb_8bit;
     throw ImageError(path + ": unsupported image extension '" + ext + "' (use .exr, .hdr, .png, .jpg)");
 }
+
+bool holds_layers(const std::string& path) { return lowercase_extension(path) == ".exr"; }
 
 void check_output_path(const std::string& path) {
     encoding_for_path(path);
@@ -42,32 +93,58 @@ void check_output_path(const std::string& path) {
     }
 }
 
+void check_image_writer_available() { image_module(); }
+
 float linear_to_srgb(float linear) {
     const float c = std::clamp(linear, 0.0f, 1.0f);
     if (c >= 1.0f) return 1.0f;  // the formula gives 1.055 - 0.055, which rounds just below 1
     return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
-void write_image(const std::string& path, int width, int height, const std::vector<float>& rgb) {
+void write_image(const std::string& path, int width, int height, const std::vector<float>& rgb,
+                 const ImageMetadata* metadata, const ImageChannels* layers) {
     const ImageEncoding encoding = encoding_for_path(path);
-    const OIIO::TypeDesc type = encoding == ImageEncoding::linear_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-    OIIO::ImageSpec spec(width, height, 3, type);
+    const std::string ext = lowercase_extension(path);
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    if (rgb.size() != 3 * pixels) throw ImageError(path + ": " + std::to_string(rgb.size()) + " values for a " +
+                                                   std::to_string(width) + "x" + std::to_string(height) + " RGB image");
+    const bool with_layers = layers && !layers->names.empty() && holds_layers(path);
+    if (with_layers && layers->values.size() != pixels * layers->names.size())
+        throw ImageError(path + ": the AOV layers do not match the image's size");
+
+    std::vector<std::string> names = {"R", "G", "B"};
     std::vector<uint8_t> bytes;
-    const void* pixels = rgb.data();
+    std::vector<float> floats;
+    const void* data = rgb.data();
     if (encoding == ImageEncoding::srgb_8bit) {
         bytes.resize(rgb.size());
         for (std::size_t i = 0; i < rgb.size(); ++i) bytes[i] = uint8_t(std::lround(255.0f * linear_to_srgb(rgb[i])));
-        pixels = bytes.data();
-        spec.attribute("oiio:ColorSpace", "sRGB");
-    } else {
-        spec.attribute("oiio:ColorSpace", "Linear");
+        data = bytes.data();
+    } else if (with_layers) {
+        const std::size_t extra = layers->names.size();
+        names.insert(names.end(), layers->names.begin(), layers->names.end());
+        floats.resize(pixels * names.size());
+        for (std::size_t p = 0; p < pixels; ++p) {
+            float* out = &floats[p * names.size()];
+            std::copy_n(&rgb[3 * p], 3, out);
+            std::copy_n(&layers->values[p * extra], extra, out + 3);
+        }
+        data = floats.data();
     }
+    std::vector<const char*> name_pointers;
+    for (const std::string& n : names) name_pointers.push_back(n.c_str());
+    Attributes attributes = metadata ? image_attributes(ext, *metadata, encoding) : Attributes{};
+    if (!metadata) attributes.add_string("oiio:ColorSpace", encoding == ImageEncoding::srgb_8bit ? "sRGB" : "Linear");
+    const WtImageAttribute* attribute_list = attributes.finish();
+
+    const WtImageModuleApi& module = image_module();
     try {
         write_file_atomically(path, [&](const std::string& temporary) {
-            auto out = OIIO::ImageOutput::create(temporary);
-            if (!out) throw ImageError(path + ": cannot create an image writer: " + OIIO::geterror());
-            if (!(out->open(temporary, spec) && out->write_image(type, pixels) && out->close()))
-                throw ImageError(path + ": writing failed: " + out->geterror());
+            const WtImageToWrite image{temporary.c_str(), width, height, int(names.size()), name_pointers.data(),
+                                       encoding == ImageEncoding::srgb_8bit ? WT_PIXEL_UINT8 : WT_PIXEL_FLOAT, data,
+                                       attribute_list, int(attributes.list.size())};
+            char error[1024];
+            if (module.write_image(&image, error, sizeof error) != 0) throw ImageError(path + ": " + error);
         });
     } catch (const FileWriteError& e) {
         throw ImageError(e.what());

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/aligned_vector.h"
+#include "core/first_surface.h"
 #include "core/path_vertex.h"
 #include "core/ray.h"
 
@@ -19,10 +20,13 @@ struct PathTable {
     AlignedVector<uint32_t> pixel, sample;
     AlignedVector<uint64_t> key;  // random-number key, from (seed, pixel, sample)
     AlignedVector<float> radiance_r, radiance_g, radiance_b;
+    // The albedo, normal and depth AOVs' data per path; empty (and never touched) without them.
+    AlignedVector<FirstSurface> first_surface;
 
-    void resize(std::size_t n) {
+    void resize(std::size_t n, bool with_aovs) {
         pixel.resize(n), sample.resize(n), key.resize(n);
         radiance_r.resize(n), radiance_g.resize(n), radiance_b.resize(n);
+        first_surface.resize(with_aovs ? n : 0);
     }
     void add_radiance(uint32_t slot, const glm::vec3& c) {
         radiance_r[slot] += c.x, radiance_g[slot] += c.y, radiance_b[slot] += c.z;
@@ -102,8 +106,8 @@ struct WavefrontWorkspace {
     HitQueue hits;
     ShadowQueue shadows;
 
-    explicit WavefrontWorkspace(std::size_t batch_paths, std::size_t shadow_rays_per_hit) {
-        paths.resize(batch_paths);
+    WavefrontWorkspace(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs) {
+        paths.resize(batch_paths, with_aovs);
         rays.reserve(batch_paths);
         next_rays.reserve(batch_paths);
         hits.reserve(batch_paths);

@@ -1,7 +1,11 @@
 #pragma once
-// The shade stage's loop over a queue, for one estimator. Included by stage_shade.cpp, which
-// instantiates the default estimator, and stage_shade_options.cpp, which instantiates the rest.
+// The shade stage's loop over a queue, for one estimator, with or without recording the AOVs'
+// first surface. Included by stage_shade.cpp (the default estimator without AOVs),
+// stage_shade_options.cpp (the other estimators without them), stage_shade_aovs.cpp (the
+// default with them) and stage_shade_options_aovs.cpp (the others with them): a render without
+// AOVs runs the loop it ran before they existed, compiled as it was.
 
+#include "core/first_surface.h"
 #include "core/path_vertex.h"
 #include "kernels/wavefront/stages.h"
 
@@ -9,7 +13,7 @@ namespace wt {
 
 // The same vertex logic as trace_reference_path, in the same order (emission, then light
 // samples, then the continuation), so both integrators add a path's terms identically.
-template <typename E>
+template <typename E, bool kRecordAovs>
 void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
                  RayQueue& next_rays, ShadowQueue& shadows) {
     const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
@@ -26,6 +30,10 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         const SurfacePoint surface = surface_at(scene, ray, hit);
         const Material& m = scene.materials[surface.material];
 
+        if constexpr (kRecordAovs) {
+            FirstSurface& first = paths.first_surface[slot];
+            if (!first.found) record_first_surface(first, scene.camera, bounce, ray, hit, surface, m, throughput);
+        }
         if (rays.count_emission[i])
             paths.add_radiance(slot, emission_added<E>(scene, m, surface, ray, hit.t, throughput,
                                                        E::mis ? rays.bsdf_pdf[i] : 0.0f, bounce));
@@ -40,7 +48,8 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
 }
 
 
-#define WT_SHADE_QUEUE_SIGNATURE(E)                                                                                       \
-    void shade_queue<E>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&, RayQueue&, ShadowQueue&)
+#define WT_SHADE_QUEUE_SIGNATURE(E, record_aovs)                                                                          \
+    void shade_queue<E, record_aovs>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&, RayQueue&,     \
+                                     ShadowQueue&)
 
 }  // namespace wt

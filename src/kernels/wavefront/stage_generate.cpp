@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "core/path_vertex.h"
 #include "kernels/wavefront/stages.h"
 
@@ -25,6 +27,7 @@ void generate_queue(const Scene& scene, const Tile& tile, uint32_t sample_begin,
             }
         }
     }
+    if (!paths.first_surface.empty()) std::fill_n(paths.first_surface.begin(), slot, FirstSurface{});
 }
 
 }  // namespace

@@ -2,13 +2,21 @@
 
 namespace wt {
 
-#define WT_DECLARE_SHADE_QUEUE(sampler, lights, clamps) extern template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps));
+#define WT_DECLARE_SHADE_QUEUE(sampler, lights, clamps)                                  \
+    extern template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), false); \
+    extern template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), true);
 WT_FOR_EACH_OPTIONAL_ESTIMATOR(WT_DECLARE_SHADE_QUEUE)
+extern template WT_SHADE_QUEUE_SIGNATURE(DefaultEstimator, true);
 
 void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
                  RayQueue& next_rays, ShadowQueue& shadows) {
+    const bool record_aovs = !paths.first_surface.empty();
     with_estimator(scene.settings.estimator, [&](auto estimator) {
-        shade_queue<decltype(estimator)>(scene, bounce, rays, hits, paths, next_rays, shadows);
+        using E = decltype(estimator);
+        if (record_aovs)
+            shade_queue<E, true>(scene, bounce, rays, hits, paths, next_rays, shadows);
+        else
+            shade_queue<E, false>(scene, bounce, rays, hits, paths, next_rays, shadows);
     });
 }
 

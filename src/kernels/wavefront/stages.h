@@ -31,7 +31,8 @@ struct IntersectContext {
 // the queue are neighbours in the image.
 void intersect_closest_stage(const IntersectContext& context, const RayQueue& rays, HitQueue& hits, bool coherent);
 
-// Emission, light samples into `shadows`, and surviving continuations into `next_rays`.
+// Emission, light samples into `shadows`, and surviving continuations into `next_rays`; with
+// AOVs (a non-empty `paths.first_surface`), each path's first surface (core/first_surface.h).
 void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
                  RayQueue& next_rays, ShadowQueue& shadows);
 

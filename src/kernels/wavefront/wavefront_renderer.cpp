@@ -7,8 +7,9 @@
 namespace wt {
 
 void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, uint32_t sample_begin,
-                           uint32_t sample_end, std::size_t batch_paths, WavefrontWorkspace& ws, Film& film,
-                           RayCounts& counts) {
+                           uint32_t sample_end, std::size_t batch_paths, const AovSelection& aovs,
+                           WavefrontWorkspace& ws, Film& film, RayCounts& counts) {
+    const bool with_aovs = aovs.needs_path_data();
     const uint32_t step = samples_per_batch(tile, batch_paths, sample_end - sample_begin);
     for (uint32_t begin = sample_begin; begin < sample_end; begin += step) {
         const uint32_t end = std::min(sample_end, begin + step);
@@ -28,7 +29,10 @@ void render_wavefront_tile(const Scene& scene, const IntersectContext& context, 
         // Slots are sample-major, so every pixel receives its samples in ascending order.
         for (uint32_t slot = 0; slot < batch_size; ++slot) {
             ++counts.samples;
-            if (!film.add_sample(ws.paths.pixel[slot], ws.paths.radiance(slot))) ++counts.nonfinite_samples;
+            float extra[Film::max_extra_channels];
+            if (with_aovs) aov_sample_values(aovs, ws.paths.first_surface[slot], extra);
+            if (!film.add_sample(ws.paths.pixel[slot], ws.paths.radiance(slot), with_aovs ? extra : nullptr))
+                ++counts.nonfinite_samples;
         }
     }
 }

@@ -3,6 +3,7 @@
 // `batch_paths` camera paths; each batch is generated, then intersect -> shade -> shadow repeat
 // until no ray is left, then its radiance goes to the film in sample order.
 
+#include "core/film/aov.h"
 #include "core/film/film.h"
 #include "core/scene.h"
 #include "kernels/wavefront/ray_queues.h"
@@ -18,9 +19,10 @@ inline uint32_t samples_per_batch(const Tile& tile, std::size_t batch_paths, uin
     return uint32_t(std::min<std::size_t>(per_batch, samples));
 }
 
-// Samples [sample_begin, sample_end) of every pixel of the tile.
+// Samples [sample_begin, sample_end) of every pixel of the tile, with the AOVs the film has
+// channels for (the workspace must then have been made with_aovs).
 void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, uint32_t sample_begin,
-                           uint32_t sample_end, std::size_t batch_paths, WavefrontWorkspace& workspace, Film& film,
-                           RayCounts& counts);
+                           uint32_t sample_end, std::size_t batch_paths, const AovSelection& aovs,
+                           WavefrontWorkspace& workspace, Film& film, RayCounts& counts);
 
 }  // namespace wt

@@ -1,0 +1,57 @@
+#include "core/film/checkpoint_settings.h"
+
+#include <cstdio>
+
+namespace wt {
+
+namespace {
+
+// Nine significant digits tell every float apart: the clamp as it was parsed, not rounded.
+std::string exact(float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", double(v));
+    return text;
+}
+
+}  // namespace
+
+std::vector<NamedSetting> image_settings(const RenderSettings& s) {
+    return {
+        {"seed", std::to_string(s.seed)},
+        {"shadow_rays", std::to_string(s.shadow_rays)},
+        {"max_bounces", std::to_string(s.max_bounces)},
+        {"rr_start_bounce", std::to_string(s.rr_start_bounce)},
+        {"triangle_test", name_of(s.accuracy.triangles)},
+        {"sphere_test", name_of(s.accuracy.spheres)},
+        {"fresnel", name_of(s.accuracy.fresnel)},
+        {"sampler", name_of(s.estimator.sampler)},
+        {"light_sampling", name_of(s.estimator.light_sampling)},
+        {"clamp_indirect", exact(s.estimator.clamp_indirect)},
+    };
+}
+
+namespace {
+
+const NamedSetting* find(const std::vector<NamedSetting>& settings, const std::string& name) {
+    for (const NamedSetting& s : settings)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+}  // namespace
+
+std::vector<std::string> setting_differences(const std::vector<NamedSetting>& a, const std::string& a_label,
+                                             const std::vector<NamedSetting>& b, const std::string& b_label) {
+    std::vector<std::string> lines;
+    for (const NamedSetting& s : a) {
+        const NamedSetting* other = find(b, s.name);
+        if (!other) lines.push_back(s.name + ": " + a_label + " " + s.value + ", " + b_label + " has no such setting");
+        else if (other->value != s.value)
+            lines.push_back(s.name + ": " + a_label + " " + s.value + ", " + b_label + " " + other->value);
+    }
+    for (const NamedSetting& s : b)
+        if (!find(a, s.name)) lines.push_back(s.name + ": " + a_label + " has no such setting, " + b_label + " " + s.value);
+    return lines;
+}
+
+}  // namespace wt

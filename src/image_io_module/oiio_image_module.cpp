@@ -1,0 +1,116 @@
+// The image I/O module: OpenImageIO behind the plain C interface of image_module_abi.h. Built
+// as its own shared object so that only a process that reads or writes an image loads
+// OpenImageIO and the few hundred libraries Debian builds it with.
+
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+
+#include "core/image_io/image_module_abi.h"
+
+namespace {
+
+void set_error(char* error, size_t size, const std::string& message) {
+    if (!error || size == 0) return;
+    const size_t n = std::min(size - 1, message.size());
+    std::memcpy(error, message.data(), n);
+    error[n] = '\0';
+}
+
+char* copy_string(const std::string& s) {
+    char* c = static_cast<char*>(std::malloc(s.size() + 1));
+    if (!c) throw std::bad_alloc();
+    std::memcpy(c, s.c_str(), s.size() + 1);
+    return c;
+}
+
+int write_image(const WtImageToWrite* image, char* error, size_t error_size) {
+    try {
+        const OIIO::TypeDesc type = image->pixel_type == WT_PIXEL_UINT8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+        OIIO::ImageSpec spec(image->width, image->height, image->channels, type);
+        spec.channelnames.assign(image->channel_names, image->channel_names + image->channels);
+        spec.alpha_channel = -1;
+        spec.z_channel = -1;
+        for (int c = 0; c < image->channels; ++c)
+            if (spec.channelnames[size_t(c)] == "Z") spec.z_channel = c;
+        for (int i = 0; i < image->attribute_count; ++i) {
+            const WtImageAttribute& a = image->attributes[i];
+            if (a.type == WT_ATTRIBUTE_INT) spec.attribute(a.name, a.int_value);
+            else if (a.type == WT_ATTRIBUTE_FLOAT) spec.attribute(a.name, a.float_value);
+            else spec.attribute(a.name, a.string_value);
+        }
+        auto out = OIIO::ImageOutput::create(image->path);
+        if (!out) {
+            set_error(error, error_size, std::string(image->path) + ": cannot create an image writer: " + OIIO::geterror());
+            return 1;
+        }
+        if (!(out->open(image->path, spec) && out->write_image(type, image->pixels) && out->close())) {
+            set_error(error, error_size, std::string(image->path) + ": writing failed: " + out->geterror());
+            return 1;
+        }
+        return 0;
+    } catch (const std::exception& e) {
+        set_error(error, error_size, std::string(image->path) + ": writing failed: " + e.what());
+        return 1;
+    }
+}
+
+void free_image(WtReadImage* image) {
+    if (!image) return;
+    for (int c = 0; c < image->channels && image->channel_names; ++c) std::free(image->channel_names[c]);
+    for (int i = 0; i < image->attribute_count; ++i) {
+        if (image->attribute_names) std::free(image->attribute_names[i]);
+        if (image->attribute_values) std::free(image->attribute_values[i]);
+    }
+    std::free(image->channel_names);
+    std::free(image->attribute_names);
+    std::free(image->attribute_values);
+    std::free(image->pixels);
+    *image = WtReadImage{};
+}
+
+int read_image(const char* path, WtReadImage* image, char* error, size_t error_size) {
+    *image = WtReadImage{};
+    try {
+        auto in = OIIO::ImageInput::open(path);
+        if (!in) {
+            set_error(error, error_size, std::string(path) + ": cannot read the image: " + OIIO::geterror());
+            return 1;
+        }
+        const OIIO::ImageSpec& spec = in->spec();
+        const size_t values = size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels);
+        image->pixels = static_cast<float*>(std::malloc(std::max<size_t>(1, values) * sizeof(float)));
+        image->channel_names = static_cast<char**>(std::calloc(size_t(std::max(1, spec.nchannels)), sizeof(char*)));
+        const size_t attributes = spec.extra_attribs.size();
+        image->attribute_names = static_cast<char**>(std::calloc(std::max<size_t>(1, attributes), sizeof(char*)));
+        image->attribute_values = static_cast<char**>(std::calloc(std::max<size_t>(1, attributes), sizeof(char*)));
+        if (!image->pixels || !image->channel_names || !image->attribute_names || !image->attribute_values)
+            throw std::bad_alloc();
+        image->width = spec.width, image->height = spec.height, image->channels = spec.nchannels;
+        for (int c = 0; c < spec.nchannels; ++c) image->channel_names[c] = copy_string(spec.channel_name(c));
+        for (const OIIO::ParamValue& p : spec.extra_attribs) {
+            image->attribute_names[image->attribute_count] = copy_string(p.name().string());
+            image->attribute_values[image->attribute_count++] = copy_string(p.get_string());
+        }
+        if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image->pixels)) {
+            set_error(error, error_size, std::string(path) + ": reading failed: " + in->geterror());
+            free_image(image);
+            return 1;
+        }
+        return 0;
+    } catch (const std::exception& e) {
+        set_error(error, error_size, std::string(path) + ": reading failed: " + e.what());
+        free_image(image);
+        return 1;
+    }
+}
+
+const WtImageModuleApi api = {WT_IMAGE_MODULE_ABI_VERSION, OIIO_VERSION_STRING, write_image, read_image, free_image};
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) const WtImageModuleApi* wavetrace_image_module_api() { return &api; }

@@ -1,0 +1,278 @@
+// Checkpoint files: a film and its header come back bit for bit, and every damaged, foreign or
+// absurd file is refused with a message naming the file and the problem, before any large
+// allocation.
+
+#include <signal.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <xxhash.h>
+
+#include "core/atomic_file.h"
+#include "core/film/checkpoint.h"
+#include "core/film/checkpoint_format.h"
+#include "core/film/checkpoint_match.h"
+#include "core/version.h"
+
+namespace wt {
+namespace {
+
+namespace fs = std::filesystem;
+
+CheckpointHeader test_header(uint32_t first = 0, uint32_t next = 4, uint32_t target = 8) {
+    RenderSettings settings;
+    settings.seed = 7;
+    return {program_version(), 0x0123456789abcdefull, first, next, target, image_settings(settings)};
+}
+
+// A film whose pixels have `samples` samples each of varied magnitude, optionally one huge
+// enough that its sums need the 16-byte encoding.
+Film test_film(int width, int height, uint32_t samples, bool huge = false, std::vector<std::string> extra = {}) {
+    Film film(width, height, extra);
+    uint64_t state = 99;
+    std::vector<float> extra_values(extra.size());
+    for (uint32_t p = 0; p < film.pixel_total(); ++p)
+        for (uint32_t s = 0; s < samples; ++s) {
+            state = state * 6364136223846793005ull + 1442695040888963407ull;
+            const float v = float(state >> 40) / float(1 << 24) * (s % 3 == 0 ? 0.001f : 20.0f);
+            for (std::size_t c = 0; c < extra.size(); ++c) extra_values[c] = -v * float(c + 1);
+            EXPECT_TRUE(film.add_sample(p, glm::vec3(v, 2 * v, huge && p == 0 ? 3e7f : v), extra_values.data()));
+        }
+    return film;
+}
+
+std::string expect_refused(const std::string& bytes, const std::string& name = "part.ckpt") {
+    try {
+        parse_checkpoint(bytes, name);
+    } catch (const CheckpointError& e) {
+        const std::string message = e.what();
+        EXPECT_EQ(message.rfind(name + ": ", 0), 0u) << "the message names the file: " << message;
+        return message;
+    }
+    ADD_FAILURE() << "accepted";
+    return "";
+}
+
+// `bytes` with its text header replaced and the checksum made valid again: what a writer with a
+// bug (or a hostile file) could produce, to test the checks behind the checksum.
+std::string with_header(const std::string& bytes, const std::string& from, const std::string& to) {
+    const uint32_t length = checkpoint_format::get_u32(reinterpret_cast<const unsigned char*>(bytes.data()) + 12);
+    std::string text = bytes.substr(16, length);
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    std::string out = bytes.substr(0, 12);
+    unsigned char len[4];
+    checkpoint_format::put_u32(len, uint32_t(text.size()));
+    out.append(reinterpret_cast<char*>(len), 4);
+    out += text;
+    out += bytes.substr(16 + length, bytes.size() - 16 - length - 8);
+    unsigned char sum[8];
+    checkpoint_format::put_u64(sum, XXH3_64bits(out.data(), out.size()));
+    out.append(reinterpret_cast<char*>(sum), 8);
+    return out;
+}
+
+TEST(Checkpoint, FilmAndHeaderComeBackBitForBit) {
+    const Film film = test_film(5, 3, 4, true, {"albedo.R", "depth"});
+    const CheckpointHeader header = test_header();
+    const std::string bytes = checkpoint_bytes(header, film);
+    const Checkpoint back = parse_checkpoint(bytes, "a.ckpt");
+    EXPECT_TRUE(back.film == film);
+    EXPECT_EQ(back.header.program_version, header.program_version);
+    EXPECT_EQ(back.header.scene_hash, header.scene_hash);
+    EXPECT_EQ(back.header.first_sample, 0u);
+    EXPECT_EQ(back.header.next_sample, 4u);
+    EXPECT_EQ(back.header.target_sample, 8u);
+    EXPECT_EQ(back.header.settings, header.settings);
+    // The huge blue value needs 16 bytes for its sums; red fits in 8, as do the extra channels.
+    EXPECT_NE(bytes.find("channel sum.R 8\n"), std::string::npos);
+    EXPECT_NE(bytes.find("channel sum.B 16\n"), std::string::npos);
+    EXPECT_NE(bytes.find("channel square.B 16\n"), std::string::npos);
+    EXPECT_NE(bytes.find("channel depth 8\n"), std::string::npos);
+    // Negative sums (the extra channels here) keep their sign through the 8-byte encoding.
+    EXPECT_LT(back.film.extra_mean(1, 1), 0.0);
+}
+
+TEST(Checkpoint, EveryTruncationIsRefused) {
+    const std::string bytes = checkpoint_bytes(test_header(), test_film(3, 2, 4));
+    for (std::size_t n = 0; n < bytes.size(); ++n) {
+        const std::string message = expect_refused(bytes.substr(0, n));
+        if (n >= 24) {
+            EXPECT_NE(message.find("truncated"), std::string::npos) << n << ": " << message;
+        }
+    }
+}
+
+// What a fuzz target sees with the checksum off: every damaged file is still refused or read
+// as a film of its sizes, never a crash (run under the sanitizers by the fuzz build).
+TEST(Checkpoint, BehindTheChecksumDamageIsRefusedOrReadSafely) {
+    const std::string bytes = checkpoint_bytes(test_header(), test_film(2, 2, 3));
+    int refused = 0;
+    for (std::size_t i = 0; i + 8 < bytes.size(); ++i) {
+        std::string damaged = bytes;
+        damaged[i] = char(damaged[i] ^ 0x41);
+        try {
+            const Checkpoint c = parse_checkpoint(damaged, "fuzz.ckpt", false);
+            EXPECT_EQ(c.film.pixel_total(), std::size_t(c.film.width()) * std::size_t(c.film.height()));
+        } catch (const CheckpointError&) {
+            ++refused;
+        }
+    }
+    EXPECT_GT(refused, 0);
+    EXPECT_TRUE(parse_checkpoint(bytes, "fuzz.ckpt", false).film == test_film(2, 2, 3));
+}
+
+TEST(Checkpoint, EveryFlippedBitIsRefused) {
+    const std::string bytes = checkpoint_bytes(test_header(), test_film(2, 2, 3));
+    for (std::size_t i = 0; i < bytes.size(); ++i)
+        for (int bit = 0; bit < 8; ++bit) {
+            std::string damaged = bytes;
+            damaged[i] = char(damaged[i] ^ (1 << bit));
+            expect_refused(damaged);
+        }
+    std::string damaged = bytes;
+    damaged[bytes.size() / 2] ^= 1;
+    EXPECT_NE(expect_refused(damaged).find("checksum mismatch"), std::string::npos);
+}
+
+TEST(Checkpoint, ForeignFilesAreNamedForWhatTheyAre) {
+    const std::string bytes = checkpoint_bytes(test_header(), test_film(2, 2, 3));
+    EXPECT_NE(expect_refused("P6\n2 2\n255\n............").find("not a wavetrace checkpoint"), std::string::npos);
+    std::string version2 = bytes;
+    version2[8] = 2;
+    EXPECT_NE(expect_refused(version2).find("byte 8: checkpoint format version 2, this program reads version 1"),
+              std::string::npos);
+    CheckpointHeader old = test_header();
+    old.program_version = "0.0.1";
+    EXPECT_NE(expect_refused(checkpoint_bytes(old, test_film(2, 2, 3))).find("written by wavetrace 0.0.1, this is wavetrace"),
+              std::string::npos);
+}
+
+TEST(Checkpoint, AbsurdSizesAreRefusedBeforeAllocating) {
+    const std::string bytes = checkpoint_bytes(test_header(), test_film(2, 2, 3));
+    std::string long_header = bytes;
+    checkpoint_format::put_u32(reinterpret_cast<unsigned char*>(&long_header[12]), 0xffffffffu);
+    EXPECT_NE(expect_refused(long_header).find("byte 12: header length 4294967295"), std::string::npos);
+
+    struct Case {
+        const char *from, *to, *expected;
+    };
+    const std::string line2 = "byte " + std::to_string(16 + std::strlen("program_version \n") + std::strlen(program_version()));
+    const std::string bad_key = line2 + ": expected 'scene_hash HEX'";
+    const Case cases[] = {
+        // 65536 x 65536 pixels would be 400 GB of film: refused against the file's 400-odd bytes.
+        {"film 2 2", "film 65536 65536", "truncated: the header describes"},
+        {"film 2 2", "film 65537 1", "not two integers from 1 to 65536"},
+        {"film 2 2", "film 0 2", "film size"},
+        // A pixel claiming more samples than the range: the counts are checked too.
+        {"samples 0 4 8", "samples 0 2 8", "has 3 samples, more than the 2"},
+        {"samples 0 4 8", "samples 5 4 8", "is not FIRST <= NEXT <= TARGET"},
+        {"samples 0 4 8", "samples 0 4 99999999999", "target sample"},
+        {"channel sum.R 8", "channel sum.R 12", "8 or 16 expected"},
+        {"channel sum.G", "channel albedo", "channel 1 must be sum.G"},
+        {"setting seed 7", "setting seed 7\nsetting seed 8", "given twice"},
+        {"scene_hash ", "scene-hash ", bad_key.c_str()},
+    };
+    for (const Case& c : cases)
+        EXPECT_NE(expect_refused(with_header(bytes, c.from, c.to)).find(c.expected), std::string::npos) << c.to;
+}
+
+TEST(Checkpoint, DifferencesAreNamed) {
+    RenderSettings a_settings, b_settings;
+    a_settings.seed = 7, b_settings.seed = 8;
+    b_settings.accuracy.fresnel = FresnelModel::exact;
+    CheckpointHeader a = test_header(), b = test_header();
+    a.settings = image_settings(a_settings), b.settings = image_settings(b_settings);
+    b.scene_hash ^= 1;
+    const std::vector<std::string> lines =
+        checkpoint_differences(a, {4, 4, {}}, "checkpoint", b, {4, 2, {"depth"}}, "scene");
+    ASSERT_EQ(lines.size(), 5u);
+    EXPECT_EQ(lines[0].rfind("scene content (camera, materials or geometry): checkpoint hash 0123456789abcdef, scene hash 0123456789abcdee", 0), 0u);
+    EXPECT_EQ(lines[1], "size: checkpoint 4x4, scene 4x2");
+    EXPECT_EQ(lines[2], "extra channels: checkpoint (none), scene depth");
+    EXPECT_EQ(lines[3], "seed: checkpoint 7, scene 8");
+    EXPECT_EQ(lines[4], "fresnel: checkpoint schlick, scene exact");
+    EXPECT_TRUE(checkpoint_differences(a, {4, 4, {}}, "x", a, {4, 4, {}}, "y").empty());
+}
+
+std::string setting(const RenderSettings& s, const std::string& name) {
+    for (const NamedSetting& n : image_settings(s))
+        if (n.name == name) return n.value;
+    return "(absent)";
+}
+
+TEST(Checkpoint, EstimatorSettingsAreStoredExactlyAndSppIsNot) {
+    RenderSettings s;
+    EXPECT_EQ(setting(s, "sampler"), "stratified");
+    EXPECT_EQ(setting(s, "spp"), "(absent)") << "spp is the sample range, which a resume may extend";
+    s.estimator.sampler = SamplerKind::sobol;
+    s.estimator.light_sampling = LightSampling::mis;
+    EXPECT_EQ(setting(s, "sampler"), "sobol");
+    EXPECT_EQ(setting(s, "light_sampling"), "mis");
+    s.estimator.clamp_indirect = 0.1f;
+    EXPECT_EQ(setting(s, "clamp_indirect"), "0.100000001");
+}
+
+struct CheckpointFile : ::testing::Test {
+    fs::path dir = fs::temp_directory_path() / ("wt_checkpoint_" + std::to_string(getpid()));
+    void SetUp() override { fs::create_directories(dir); }
+    void TearDown() override { fs::remove_all(dir); }
+    std::size_t entries() const { return std::size_t(std::distance(fs::directory_iterator(dir), fs::directory_iterator())); }
+};
+
+TEST_F(CheckpointFile, WrittenAtomicallyAndReadBack) {
+    const std::string path = (dir / "a.ckpt").string();
+    const Film film = test_film(7, 5, 3);
+    write_checkpoint_file(path, test_header(), film);
+    EXPECT_TRUE(read_checkpoint_file(path).film == film);
+    EXPECT_EQ(entries(), 1u);
+    EXPECT_TRUE(is_checkpoint_path(path));
+    EXPECT_FALSE(is_checkpoint_path((dir / "a.exr").string()));
+    const std::string missing = (dir / "missing.ckpt").string();
+    try {
+        read_checkpoint_file(missing);
+        ADD_FAILURE();
+    } catch (const CheckpointError& e) {
+        EXPECT_EQ(std::string(e.what()), missing + ": cannot open: No such file or directory");
+    }
+}
+
+// A file size limit fails the write() part-way, as a full disk does (EFBIG instead of ENOSPC):
+// the previous checkpoint must stay whole and no temporary remain.
+TEST_F(CheckpointFile, AFullDiskKeepsThePreviousCheckpoint) {
+    const std::string path = (dir / "a.ckpt").string();
+    const Film small = test_film(2, 2, 3);
+    write_checkpoint_file(path, test_header(), small);
+    const Film big = test_film(64, 64, 1);  // about 200 kB
+
+    struct sigaction ignore {}, previous{};
+    ignore.sa_handler = SIG_IGN;
+    sigaction(SIGXFSZ, &ignore, &previous);
+    rlimit old_limit{};
+    getrlimit(RLIMIT_FSIZE, &old_limit);
+    rlimit limit = old_limit;
+    limit.rlim_cur = 50000;
+    setrlimit(RLIMIT_FSIZE, &limit);
+    std::string message;
+    try {
+        write_checkpoint_file(path, test_header(), big);
+    } catch (const FileWriteError& e) {
+        message = e.what();
+    }
+    setrlimit(RLIMIT_FSIZE, &old_limit);
+    sigaction(SIGXFSZ, &previous, nullptr);
+
+    EXPECT_EQ(message.rfind(path + ": cannot write: ", 0), 0u) << message;
+    EXPECT_TRUE(read_checkpoint_file(path).film == small);
+    EXPECT_EQ(entries(), 1u);
+}
+
+}  // namespace
+}  // namespace wt
