@@ -8,7 +8,7 @@ JOBS ?= $(shell nproc)
 SCENE ?= scenes/hexroom.json
 RENDER_DIR ?= renders
 
-.PHONY: render render-mesh test test-long test-mpi bench bench-deps perf-gate perf-gate-update build deps configure clean
+.PHONY: render render-mesh reference tradeoff spp-series test test-long test-mpi bench bench-deps perf-gate perf-gate-update build deps configure clean
 
 render: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
@@ -21,6 +21,31 @@ render-mesh: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace bench_data
 	mkdir -p $(RENDER_DIR)
 	$(BUILD_DIR)/bin/wavetrace render $(BUILD_DIR)/bench-data/hexroom_mesh1m.json -o $(RENDER_DIR)/hexroom_mesh1m.png
+
+# The converged reference the error tools compare against (scenes/reference/, committed): the
+# hexroom at 200x200, two independent halves of 4096 spp with every accurate option; it prints
+# its own noise. About 3 minutes on a quiet 2-core machine. See README, "Error against a reference".
+REFERENCE ?= scenes/reference/hexroom_200x200.exr
+reference: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
+	tools/make_reference.sh $(BUILD_DIR)/bin/wavetrace scenes/hexroom.json $(REFERENCE) 4096 200 200
+
+# The hexroom's speed/accuracy trade table (stdout, build/tradeoff/*.csv) and docs/tradeoff.png:
+# about 15 minutes on 2 cores. README, "The speed/accuracy trade".
+TRADEOFF_DIR ?= $(BUILD_DIR)/tradeoff
+tradeoff: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
+	mkdir -p $(TRADEOFF_DIR)
+	$(BUILD_DIR)/bin/wavetrace tradeoff $(SCENE) --width 200 --height 200 --reference $(REFERENCE) \
+	  --spp 4,16,64,256 --repeats 5 --csv $(TRADEOFF_DIR)/points.csv --fits-csv $(TRADEOFF_DIR)/fits.csv \
+	  | tee $(TRADEOFF_DIR)/table.txt
+	tools/plot_tradeoff.py $(TRADEOFF_DIR)/points.csv $(TRADEOFF_DIR)/fits.csv docs/tradeoff.png \
+	  --title "hexroom 200x200, 2 threads: RMSE against time, one knob changed at a time"
+
+# docs/spp_series.png: the hexroom at 1, 4, 16 and 64 spp, labelled with time and RMSE.
+spp-series: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
+	tools/spp_series.sh $(BUILD_DIR)/bin/wavetrace $(SCENE) $(REFERENCE) docs/spp_series.png
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) -LE long

@@ -17,6 +17,8 @@ packages=(
   libbenchmark-dev              # benchmarks
   valgrind                      # callgrind, for the instruction-count performance gate
   libxxhash-dev                 # the checkpoint checksum (XXH3-64)
+  python3-matplotlib            # tools/plot_tradeoff.py: the error-against-time plot of `wavetrace tradeoff`
+  fonts-dejavu-core             # tools/spp_series.sh: oiiotool --text needs a font file to label docs/spp_series.png
 )
 # Extra packages named on the command line (bench/install-bench-deps.sh: the benchmarks' own).
 packages+=("$@")

@@ -98,6 +98,7 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
                 }
             },
             "AOV,...", "AOV list"));
+    add_reference_error_options(*cmd, o.error);
     cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but errors (no progress, no summary)");
     return cmd;
 }
@@ -191,6 +192,7 @@ int run_render_command(RenderCommandOptions& o) {
             o.render.isa = parse_isa(o.isa_name);
             if (!cpu_supports(*o.render.isa)) throw std::runtime_error("--isa " + o.isa_name + ": this CPU does not support it");
         }
+        ReferenceErrorLog error_log(o.error, settings.width, settings.height);
         RenderSession session(scene, o.render);
 #if WAVETRACE_MPI
         if (MpiJob::active())
@@ -232,6 +234,7 @@ int run_render_command(RenderCommandOptions& o) {
             hooks.every(o.checkpoint_every, [&](const Film& current, const PassReport& report) {
                 try_write_checkpoint(*o.checkpoint, header_at(report.pass_samples.end), current, !o.quiet);
             });
+        error_log.attach(hooks, session, o.quiet ? nullptr : &std::cerr);
         install_interrupt_handlers();
         const ProgressiveResult passes_done = render_progressive(session, film, passes, &hooks);
         progress.finish();
@@ -250,6 +253,7 @@ int run_render_command(RenderCommandOptions& o) {
                                   passes_done.end_sample - first, written};
             print_render_summary(std::cout, summary);
         }
+        error_log.finish(session.result().seconds, passes_done.end_sample - first, film, o.quiet ? nullptr : &std::cout);
         return passes_done.reason == StopReason::interrupted ? exit_interrupted : 0;
     } catch (const std::exception& e) {
         std::cerr << "wavetrace: error: " << e.what() << "\n";

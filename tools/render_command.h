@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "kernels/renderer.h"
+#include "reference_error.h"
 
 namespace wt {
 
@@ -29,6 +30,7 @@ struct RenderCommandOptions {
     std::optional<std::string> checkpoint, resume, samples;  // samples: "BEGIN:END", a partial render
     double checkpoint_every = 300.0;                         // seconds
     std::string aov_list;                           // --aov: "albedo,normal,..." or "all"; empty: none
+    ReferenceErrorOptions error;                    // --reference, --error-csv
     bool quiet = false;
 };
 

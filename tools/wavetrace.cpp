@@ -7,8 +7,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "compare_command.h"
 #include "merge_command.h"
 #include "render_command.h"
+#include "tradeoff_command.h"
 #if WAVETRACE_MPI
 #include "mpi_render.h"
 #endif
@@ -34,6 +36,7 @@ int main(int argc, char** argv) {
     CLI::App* render = wt::add_render_command(app, render_options);
     wt::MergeCommandOptions merge_options;
     CLI::App* merge = wt::add_merge_command(app, merge_options);
+    const std::vector<wt::Subcommand> subcommands = {wt::compare_subcommand(app), wt::tradeoff_subcommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -41,5 +44,7 @@ int main(int argc, char** argv) {
     }
     if (render->parsed()) return wt::run_render_command(render_options);
     if (merge->parsed()) return wt::run_merge_command(merge_options);
+    for (const wt::Subcommand& s : subcommands)
+        if (s.app->parsed()) return s.run();
     return 1;
 }

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 
 namespace wt {
 
@@ -43,6 +44,23 @@ void sync_path(const std::string& path, int flags, const std::string& target, co
 }
 
 }  // namespace
+
+void write_text_file_atomically(const std::string& path, const std::string& text) {
+    write_file_atomically(path, [&](const std::string& temporary) {
+        std::ofstream out(temporary, std::ios::binary);
+        out << text;
+        out.close();
+        if (!out) throw FileWriteError(path + ": writing failed");
+    });
+}
+
+void check_output_directory(const std::string& path) {
+    fs::path dir = fs::path(path).parent_path();
+    if (dir.empty()) dir = ".";
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) throw FileWriteError(path + ": directory '" + dir.string() + "' does not exist");
+    if (access(dir.c_str(), W_OK) != 0) throw FileWriteError(path + ": directory '" + dir.string() + "' is not writable");
+}
 
 const char* temporary_file_in_progress() { return in_progress_set.load() ? in_progress : ""; }
 

@@ -23,6 +23,13 @@ struct FileWriteError : std::runtime_error {
 // naming `path` (or rethrows what `write` threw), with the temporary removed.
 void write_file_atomically(const std::string& path, const std::function<void(const std::string& temporary)>& write);
 
+// The same for a text (a CSV table).
+void write_text_file_atomically(const std::string& path, const std::string& text);
+
+// Checked before the work whose result goes to `path`, so a typo costs nothing: its directory
+// exists and is writable. Throws FileWriteError naming the path.
+void check_output_directory(const std::string& path);
+
 // The temporary file being written right now, or an empty string: for a signal handler.
 const char* temporary_file_in_progress();
 

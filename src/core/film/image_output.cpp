@@ -86,11 +86,11 @@ bool holds_layers(const std::string& path) { return lowercase_extension(path) ==
 
 void check_output_path(const std::string& path) {
     encoding_for_path(path);
-    fs::path dir = fs::path(path).parent_path();
-    if (dir.empty()) dir = ".";
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec)) throw ImageError(path + ": directory '" + dir.string() + "' does not exist");
-    if (access(dir.c_str(), W_OK) != 0) throw ImageError(path + ": directory '" + dir.string() + "' is not writable");
+    try {
+        check_output_directory(path);
+    } catch (const FileWriteError& e) {
+        throw ImageError(e.what());
+    }
 }
 
 void check_image_writer_available() { image_module(); }

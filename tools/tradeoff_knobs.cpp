@@ -1,0 +1,63 @@
+#include "tradeoff_knobs.h"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace wt {
+
+namespace {
+
+// The integer knobs' values are written in the table, so stoi cannot fail on them.
+void set_shadow_rays(RenderSettings& s, const std::string& v) { s.shadow_rays = std::stoi(v); }
+void set_rr_start(RenderSettings& s, const std::string& v) { s.rr_start_bounce = std::stoi(v); }
+void set_max_bounces(RenderSettings& s, const std::string& v) { s.max_bounces = std::stoi(v); }
+void set_fresnel(RenderSettings& s, const std::string& v) { s.accuracy.fresnel = *parse_fresnel_model(v); }
+void set_triangle_test(RenderSettings& s, const std::string& v) { s.accuracy.triangles = *parse_triangle_test(v); }
+void set_sphere_test(RenderSettings& s, const std::string& v) { s.accuracy.spheres = *parse_sphere_test(v); }
+void set_sampler(RenderSettings& s, const std::string& v) { s.estimator.sampler = *parse_sampler(v); }
+void set_light_sampling(RenderSettings& s, const std::string& v) { s.estimator.light_sampling = *parse_light_sampling(v); }
+void set_clamp(RenderSettings& s, const std::string& v) { s.estimator.clamp_indirect = std::stof(v); }
+
+std::string shadow_rays(const RenderSettings& s) { return std::to_string(s.shadow_rays); }
+std::string rr_start(const RenderSettings& s) { return std::to_string(s.rr_start_bounce); }
+std::string max_bounces(const RenderSettings& s) { return std::to_string(s.max_bounces); }
+std::string fresnel(const RenderSettings& s) { return name_of(s.accuracy.fresnel); }
+std::string triangle_test(const RenderSettings& s) { return name_of(s.accuracy.triangles); }
+std::string sphere_test(const RenderSettings& s) { return name_of(s.accuracy.spheres); }
+std::string sampler(const RenderSettings& s) { return name_of(s.estimator.sampler); }
+std::string light_sampling(const RenderSettings& s) { return name_of(s.estimator.light_sampling); }
+std::string clamp(const RenderSettings& s) {
+    std::ostringstream out;  // 4 -> "4", as the table writes it
+    out << s.estimator.clamp_indirect;
+    return out.str();
+}
+
+}  // namespace
+
+const std::vector<Knob>& tradeoff_knobs() {
+    // Russian roulette's survival threshold (0.95) is not a setting, so it is not here.
+    static const std::vector<Knob> knobs = {
+        {"shadow_rays", {"1", "2", "3", "4", "8"}, false, set_shadow_rays, shadow_rays},
+        {"rr_start_bounce", {"0", "1", "3", "5", "8"}, false, set_rr_start, rr_start},
+        {"max_bounces", {"2", "4", "8", "16", "64"}, true, set_max_bounces, max_bounces},
+        {"fresnel", {"schlick", "exact"}, true, set_fresnel, fresnel},
+        {"triangle_test", {"moller_trumbore", "watertight"}, true, set_triangle_test, triangle_test},
+        {"sphere_test", {"quadratic", "cancellation_free"}, true, set_sphere_test, sphere_test},
+        {"sampler", {"independent", "stratified", "sobol"}, false, set_sampler, sampler},
+        {"light_sampling", {"nee", "mis"}, false, set_light_sampling, light_sampling},
+        // 0 is off; the clamp trades bias (the mean drops where caustics are) for variance.
+        {"clamp_indirect", {"0", "1", "4", "16"}, true, set_clamp, clamp},
+    };
+    return knobs;
+}
+
+const Knob& tradeoff_knob(const std::string& name) {
+    std::string known;
+    for (const Knob& k : tradeoff_knobs()) {
+        if (name == k.name) return k;
+        known += std::string(known.empty() ? "" : ", ") + k.name;
+    }
+    throw std::invalid_argument("no knob named '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace wt
