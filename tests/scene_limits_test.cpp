@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/printable.h"
 #include "core/regular_file.h"
 #include "core/scene_file/json_parse.h"
 #include "scene_test_helpers.h"

@@ -8,8 +8,10 @@
 #include <iostream>
 #include <sstream>
 
+#include "cli_values.h"
 #include "core/film/film.h"
 #include "core/film/image_output.h"
+#include "core/printable.h"
 #include "core/scene.h"
 #include "core/scene_file/scene_loader.h"
 #include "kernels/isa/intersect_dispatch.h"
@@ -23,13 +25,13 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
     cmd->add_option("-o,--output", o.outputs,
                     "Output image; repeat for several. .exr/.hdr: linear float, .png/.jpg: sRGB 8-bit "
                     "(default: SCENE's name with .png, in the current directory)");
-    cmd->add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, 1 << 20));
-    cmd->add_option("--shadow-rays", o.shadow_rays, "Shadow rays per diffuse hit")->check(CLI::Range(1, 1024));
-    cmd->add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 65536));
-    cmd->add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, 65536));
-    cmd->add_option("--seed", o.seed, "Random seed");
+    cmd->add_option("--spp", o.spp, "Samples per pixel")->transform(decimal_integer(1, 1 << 20));
+    cmd->add_option("--shadow-rays", o.shadow_rays, "Shadow rays per diffuse hit")->transform(decimal_integer(1, 1024));
+    cmd->add_option("--width", o.width, "Image width in pixels")->transform(decimal_integer(1, 65536));
+    cmd->add_option("--height", o.height, "Image height in pixels")->transform(decimal_integer(1, 65536));
+    cmd->add_option("--seed", o.seed, "Random seed")->transform(decimal_integer(0, UINT64_MAX));
     cmd->add_option("--threads", o.render.threads, "Worker threads (default: one per hardware thread)")
-        ->check(CLI::Range(1, 1024));
+        ->transform(decimal_integer(1, 1024));
     cmd->add_option("--integrator", o.integrator_name, "wavefront (fast) or reference (scalar per-path oracle)")
         ->check(CLI::IsMember({"wavefront", "reference"}));
     cmd->add_option("--triangle-test", o.triangle_test, "moller_trumbore (fast) or watertight (no leaks at shared edges)")
@@ -43,10 +45,10 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
     cmd->add_option("--accel", o.accel_name,
                     "Acceleration structure: auto (flat list for tiny scenes, else a BVH), bvh, or brute (flat list)")
         ->check(CLI::IsMember({"auto", "bvh", "brute"}));
-    cmd->add_option("--bvh-width", o.render.bvh.node_width, "Children per BVH node: 4 or 8")->check(CLI::IsMember({4, 8}));
-    cmd->add_option("--tile-size", o.render.tile_size, "Tile side in pixels")->check(CLI::Range(1, 65536));
+    cmd->add_option("--bvh-width", o.render.bvh.node_width, "Children per BVH node: 4 or 8")->transform(decimal_integer(4, 8))->check(CLI::IsMember({4, 8}));
+    cmd->add_option("--tile-size", o.render.tile_size, "Tile side in pixels")->transform(decimal_integer(1, 65536));
     cmd->add_option("--batch-paths", o.render.batch_paths, "Camera paths per wavefront batch")
-        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
+        ->transform(decimal_integer(1, uint64_t(1) << 24));
     cmd->add_option("--debug-sample", o.debug_sample,
                     "X,Y,S: trace only sample S of pixel (X,Y) with the reference integrator and print every vertex");
     cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but errors");
@@ -209,7 +211,7 @@ int run_render_command(RenderCommandOptions& o) {
         }
         return 0;
     } catch (const std::exception& e) {
-        std::cerr << "wavetrace: error: " << e.what() << "\n";
+        std::cerr << "wavetrace: error: " << printable(e.what()) << "\n";
         return 1;
     }
 }

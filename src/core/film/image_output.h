@@ -20,7 +20,8 @@ enum class ImageEncoding { linear_float, srgb_8bit };
 ImageEncoding encoding_for_path(const std::string& path);
 
 // Checked before rendering, so a typo in -o costs nothing: extension known, directory exists
-// and is writable.
+// and is writable, the path is not a directory, and the temporary file's name (longer than
+// the image's) fits the directory's name limit.
 void check_output_path(const std::string& path);
 
 // rgb: width * height * 3 linear floats, rows top to bottom.

@@ -1,10 +1,10 @@
 #include "core/scene_file/json_parse.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <unordered_set>
 #include <vector>
 
+#include "core/printable.h"
 #include "core/scene_file/scene_error.h"
 
 namespace wt {
@@ -160,21 +160,6 @@ std::string strip_nlohmann_prefix(const std::string& what) {
 }
 
 }  // namespace
-
-std::string printable(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
-    for (const unsigned char c : text) {
-        if (c >= 0x20 && c < 0x7f) {
-            out += char(c);
-        } else {
-            char hex[5];
-            std::snprintf(hex, sizeof hex, "\\x%02x", c);
-            out += hex;
-        }
-    }
-    return out;
-}
 
 Json parse_json(const std::string& text, const std::string& source) {
     Json root;

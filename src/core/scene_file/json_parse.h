@@ -16,8 +16,4 @@ constexpr std::size_t kMaxJsonDepth = 64;
 // kMaxJsonDepth. Time and memory are linear in the text's size.
 Json parse_json(const std::string& text, const std::string& source);
 
-// Bytes outside printable ASCII as \xNN, so a message never sends a file's raw bytes (or an
-// argument's) to the terminal.
-std::string printable(const std::string& text);
-
 }  // namespace wt
