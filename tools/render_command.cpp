@@ -15,6 +15,7 @@
 #include "core/scene.h"
 #include "core/scene_file/scene_loader.h"
 #include "kernels/isa/intersect_dispatch.h"
+#include "kernels/memory_estimate.h"
 #include "kernels/reference_integrator.h"
 
 namespace wt {
@@ -66,13 +67,6 @@ std::string with_si_prefix(double value) {
     else if (value == double(uint64_t(value))) s << uint64_t(value);
     else s << std::fixed << value;
     return s.str();
-}
-
-// Physical memory, to refuse an image whose film cannot fit before trying to allocate it.
-double physical_memory_bytes() {
-    const long pages = sysconf(_SC_PHYS_PAGES);
-    const long page_size = sysconf(_SC_PAGE_SIZE);
-    return pages > 0 && page_size > 0 ? double(pages) * double(page_size) : 0.0;
 }
 
 DebugSample parse_debug_sample(const std::string& text, int width, int height) {
@@ -161,20 +155,13 @@ int run_render_command(RenderCommandOptions& o) {
 
         if (o.outputs.empty()) o.outputs.push_back(std::filesystem::path(o.scene_path).stem().string() + ".png");
         for (const std::string& out : o.outputs) check_output_path(out);
-        const double film_bytes = Film::bytes_needed(settings.width, settings.height);
-        const double memory = physical_memory_bytes();
-        if (memory > 0.0 && film_bytes > 0.5 * memory) {
-            std::ostringstream msg;
-            msg << settings.width << "x" << settings.height << " image needs " << with_si_prefix(film_bytes)
-                << "B of film memory, more than half of this machine's " << with_si_prefix(memory) << "B";
-            throw std::runtime_error(msg.str());
-        }
-
         o.render.integrator = o.integrator_name == "reference" ? Integrator::reference : Integrator::wavefront;
         if (o.isa_name != "auto") {
             o.render.isa = parse_isa(o.isa_name);
             if (!cpu_supports(*o.render.isa)) throw std::runtime_error("--isa " + o.isa_name + ": this CPU does not support it");
         }
+        const std::string memory = memory_problem(estimate_render_memory(scene, o.render), available_memory_bytes());
+        if (!memory.empty()) throw std::runtime_error(memory);
         Film film(settings.width, settings.height);
         const RenderResult result = render(scene, o.render, film);
         const std::vector<float> rgb = film.resolve();

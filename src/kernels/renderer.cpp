@@ -9,6 +9,7 @@
 
 #include "core/thread_pool.h"
 #include "kernels/isa/intersect_dispatch.h"
+#include "kernels/memory_estimate.h"
 #include "kernels/reference_integrator.h"
 #include "kernels/wavefront/tiles.h"
 #include "kernels/wavefront/wavefront_renderer.h"
@@ -56,11 +57,9 @@ RenderResult render(const Scene& scene, const RenderOptions& options, Film& film
         }
         auto& ws = workspaces[std::size_t(worker)];
         if (!ws) {
-            // A batch holds at most batch_paths paths, or one sample of every pixel of a tile larger than that.
-            const std::size_t image_pixels = std::size_t(scene.settings.width) * std::size_t(scene.settings.height);
-            const std::size_t tile_pixels = std::min(image_pixels, std::size_t(options.tile_size) * std::size_t(options.tile_size));
-            const std::size_t capacity = std::max(options.batch_paths, tile_pixels);
-            ws = std::make_unique<WavefrontWorkspace>(capacity, std::size_t(scene.settings.shadow_rays));
+            const RenderSettings& s = scene.settings;
+            const std::size_t capacity = workspace_paths(s.width, s.height, s.spp, options.tile_size, options.batch_paths);
+            ws = std::make_unique<WavefrontWorkspace>(capacity, std::size_t(s.shadow_rays));
         }
         render_wavefront_tile(scene, context, tile, options.batch_paths, *ws, film, c);
     });

@@ -95,6 +95,12 @@ struct WavefrontWorkspace {
     HitQueue hits;
     ShadowQueue shadows;
 
+    // What the constructor allocates, per path: the path table (2 x 4 + 8 + 3 x 4 bytes), two
+    // ray queues (9 x 4 + 4 + 1), the hits (3 x 4 + 4); per shadow ray (10 x 4 + 4 + 1).
+    static constexpr std::size_t bytes_needed(std::size_t batch_paths, std::size_t shadow_rays_per_hit) {
+        return batch_paths * (28 + 2 * 41 + 16) + batch_paths * shadow_rays_per_hit * 45;
+    }
+
     explicit WavefrontWorkspace(std::size_t batch_paths, std::size_t shadow_rays_per_hit) {
         paths.resize(batch_paths);
         rays.reserve(batch_paths);
