@@ -9,10 +9,9 @@
 // layouts (ray packet and primitive packet), closest hit and any hit. A failing check prints
 // the implementation, the ray in hex floats (%a, exact and pasteable into C++) and what came out.
 //
-// Comments marked FOUND describe a bug these tests found and how it was fixed. The two sphere
-// tests still DISABLED_ document what the default quadratic sphere test cannot do (its
-// precision limit, which the cancellation-free option removes); run them with
-// --gtest_also_run_disabled_tests.
+// Comments marked FOUND describe a bug these tests found and how it was fixed. Two sphere tests
+// assert what the default quadratic sphere test gets wrong (its documented precision limit)
+// and that the cancellation-free option gets it right.
 
 #include <algorithm>
 #include <array>
@@ -737,7 +736,22 @@ AccuracySettings cancellation_free_spheres() {
 //   origin (0,0,0), direction (0x1p+0, 0x1.9a96cep-22, -0x1.bc2606p-20), whose line passes 1.7
 //     radii from the centre: expected a miss, got a hit at t = 1e6. Every ray aimed 1.1 to 2
 //     radii from the centre hits.
-TEST(SphereExtremes, DISABLED_FarAwaySphereIsHitAtTheRightRootAndNowhereElse) { far_away_spheres({}); }
+// The first ray of the reproduction above, exactly.
+Answer one_sphere_answer(const glm::vec3& center, float radius, const Ray& ray, const AccuracySettings& accuracy = {}) {
+    Scene scene = scene_of({}, {{center, radius}});
+    scene.settings.accuracy = accuracy;
+    return scalar_answer(scene, {ray});
+}
+
+TEST(SphereExtremes, TheQuadraticTestFailsOnAFarAwaySphereAndTheCancellationFreeOneDoesNot) {
+    const glm::vec3 far(1e6f, 0.0f, 0.0f);
+    const Ray on_axis{glm::vec3(0.0f), glm::vec3(1, 0, 0)};
+    EXPECT_EQ(one_sphere_answer(far, 1.0f, on_axis).t, 1e6f) << "documented: b^2 - c rounds to 0, the root is the centre";
+    EXPECT_EQ(one_sphere_answer(far, 1.0f, on_axis, cancellation_free_spheres()).t, 999999.0f);
+    const Ray beside{glm::vec3(0.0f), glm::vec3(0x1p+0f, 0x1.9a96cep-22f, -0x1.bc2606p-20f)};  // 1.7 radii off
+    EXPECT_TRUE(one_sphere_answer(far, 1.0f, beside).found()) << "documented: a false hit";
+    EXPECT_FALSE(one_sphere_answer(far, 1.0f, beside, cancellation_free_spheres()).found());
+}
 
 // The same rays with the cancellation-free option (not the default): it passes.
 TEST(SphereExtremes, FarAwaySphereWithTheCancellationFreeOption) { far_away_spheres(cancellation_free_spheres()); }
@@ -747,8 +761,11 @@ TEST(SphereExtremes, FarAwaySphereWithTheCancellationFreeOption) { far_away_sphe
 // Reproduction: centre (0, 0, -1) radius 1e-4, origin (0,0,0), direction (0,0,-1): expected
 // t = 1 - 1e-4, got t = 1 (the centre); rays whose line passes 1.1 to 2 radii from the centre
 // hit, and the root is off by up to the radius, 800 float steps at 1.
-TEST(SphereExtremes, DISABLED_TinySphereAtUnitDistanceIsHitAtTheRightRootAndNowhereElse) {
-    tiny_spheres_at_unit_distance({});
+TEST(SphereExtremes, TheQuadraticTestFailsOnATinySphereAtUnitDistanceAndTheCancellationFreeOneDoesNot) {
+    const glm::vec3 tiny(0.0f, 0.0f, -1.0f);
+    const Ray down{glm::vec3(0.0f), glm::vec3(0, 0, -1)};
+    EXPECT_EQ(one_sphere_answer(tiny, 1e-4f, down).t, 1.0f) << "documented: the root is the centre";
+    EXPECT_NEAR(one_sphere_answer(tiny, 1e-4f, down, cancellation_free_spheres()).t, 1.0f - 1e-4f, 2e-7f);
 }
 
 // The same rays with the cancellation-free option (not the default): it passes.
@@ -1256,7 +1273,8 @@ TEST(OrenNayarExtremes, GrazingViewAndLargeSigmaStayFiniteAndBelowRho) {
             }
             // Sampled weights: finite, non-negative, on the side the ray came from. The ray
             // arrives along -wo; with wo exactly in the tangent plane it counts as a back hit.
-            double weight_sum = 0.0;
+            // Their mean is the directional albedo (the quadrature above), up to its noise.
+            double weight_sum = 0.0, weight_squares = 0.0;
             const int n = 20000;
             for (int k = 0; k < n; ++k) {
                 const BsdfSample s = sample_bsdf(m, kUp, -wo, u01(rng), u01(rng), u01(rng));
@@ -1264,8 +1282,12 @@ TEST(OrenNayarExtremes, GrazingViewAndLargeSigmaStayFiniteAndBelowRho) {
                 ASSERT_TRUE(std::isfinite(s.weight.x) && s.weight.x >= 0.0f) << "weight " << s.weight.x << " direction " << hex(s.direction);
                 ASSERT_TRUE(std::isfinite(s.direction.x) && std::isfinite(s.direction.y) && std::isfinite(s.direction.z));
                 weight_sum += s.weight.x;
+                weight_squares += double(s.weight.x) * double(s.weight.x);
             }
-            EXPECT_TRUE(std::isfinite(weight_sum));
+            if (wo.z > 0.0f) {
+                const double mean = weight_sum / n, sd = std::sqrt(std::max(0.0, weight_squares / n - mean * mean));
+                EXPECT_NEAR(mean, albedo, 5.0 * sd / std::sqrt(double(n)) + 2e-3);
+            }
         }
     }
 }
