@@ -2,13 +2,8 @@
 
 #include "extremes_helpers.h"
 
-namespace wt {
+namespace wt::extremes {
 namespace {
-
-using namespace extremes;
-using test::diffuse;
-using test::direction_at;
-using test::directional_albedo;
 
 // ---- film: radiance that overflows to infinity ----------------------------------------------
 
@@ -86,4 +81,4 @@ TEST(FilmOverflow, InfiniteSamplesAreCountedAndTheImageStaysFinite) {
 
 
 }  // namespace
-}  // namespace wt
+}  // namespace wt::extremes

@@ -3,13 +3,8 @@
 
 #include "extremes_helpers.h"
 
-namespace wt {
+namespace wt::extremes {
 namespace {
-
-using namespace extremes;
-using test::diffuse;
-using test::direction_at;
-using test::directional_albedo;
 
 // ---- glass ------------------------------------------------------------------------------------
 
@@ -246,4 +241,4 @@ TEST(Glass, IndexMatchedSphereIsInvisibleWithItsRimInViewWithTheExactFresnelOpti
 
 
 }  // namespace
-}  // namespace wt
+}  // namespace wt::extremes

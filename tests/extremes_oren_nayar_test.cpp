@@ -2,13 +2,8 @@
 
 #include "extremes_helpers.h"
 
-namespace wt {
+namespace wt::extremes {
 namespace {
-
-using namespace extremes;
-using test::diffuse;
-using test::direction_at;
-using test::directional_albedo;
 
 // ---- Oren-Nayar at grazing view and large roughness ---------------------------------------------
 
@@ -71,4 +66,4 @@ TEST(OrenNayarExtremes, GrazingViewAndLargeSigmaStayFiniteAndBelowRho) {
 
 
 }  // namespace
-}  // namespace wt
+}  // namespace wt::extremes

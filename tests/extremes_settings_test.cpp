@@ -2,13 +2,8 @@
 
 #include "extremes_helpers.h"
 
-namespace wt {
+namespace wt::extremes {
 namespace {
-
-using namespace extremes;
-using test::diffuse;
-using test::direction_at;
-using test::directional_albedo;
 
 // ---- settings at the edges ----------------------------------------------------------------------
 
@@ -62,4 +57,4 @@ TEST(EdgeSettings, TinyImagesOneSampleIdleThreadsAndHugeTiles) {
 
 
 }  // namespace
-}  // namespace wt
+}  // namespace wt::extremes

@@ -2,13 +2,8 @@
 
 #include "extremes_helpers.h"
 
-namespace wt {
+namespace wt::extremes {
 namespace {
-
-using namespace extremes;
-using test::diffuse;
-using test::direction_at;
-using test::directional_albedo;
 
 // ---- spawned rays never hit the primitive they leave -----------------------------------------
 
@@ -147,4 +142,4 @@ TEST(SpawnedRays, NeverHitAHugeSphereUsedAsAFloor) {
 
 
 }  // namespace
-}  // namespace wt
+}  // namespace wt::extremes

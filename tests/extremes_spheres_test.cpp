@@ -3,13 +3,8 @@
 
 #include "extremes_helpers.h"
 
-namespace wt {
+namespace wt::extremes {
 namespace {
-
-using namespace extremes;
-using test::diffuse;
-using test::direction_at;
-using test::directional_albedo;
 
 // ---- spheres ----------------------------------------------------------------------------------
 
@@ -240,4 +235,4 @@ TEST(SphereExtremes, OriginsOnAndInsideSpheres) {
 
 
 }  // namespace
-}  // namespace wt
+}  // namespace wt::extremes

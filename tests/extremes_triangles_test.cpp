@@ -3,13 +3,8 @@
 
 #include "extremes_helpers.h"
 
-namespace wt {
+namespace wt::extremes {
 namespace {
-
-using namespace extremes;
-using test::diffuse;
-using test::direction_at;
-using test::directional_albedo;
 
 // ---- triangles: parallel rays and rays one ulp off the plane --------------------------------
 
@@ -392,4 +387,4 @@ TEST(SignedZeroDirections, NegativeZeroBehavesLikePositiveZero) {
 
 
 }  // namespace
-}  // namespace wt
+}  // namespace wt::extremes
