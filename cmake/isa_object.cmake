@@ -15,6 +15,8 @@
 # the result in the binaries.
 #
 # LINK: targets whose usage requirements (include directories, definitions) the TU needs.
+# GNU ld for the partial link (clang's CMAKE_LINKER may be lld, which lacks --force-group-allocation).
+find_program(WAVETRACE_PARTIAL_LINKER NAMES ld.bfd ld REQUIRED)
 function(wavetrace_isa_object out name source)
   cmake_parse_arguments(PARSE_ARGV 3 arg "" "" "FLAGS;EXPORT;LINK")
   add_library(${name}_compile OBJECT ${source})
@@ -33,7 +35,7 @@ function(wavetrace_isa_object out name source)
   set(isolated ${CMAKE_CURRENT_BINARY_DIR}/${name}.isolated.o)
   add_custom_command(
     OUTPUT ${isolated}
-    COMMAND ${CMAKE_LINKER} -r --force-group-allocation -o ${isolated}.partial $<TARGET_OBJECTS:${name}_compile>
+    COMMAND ${WAVETRACE_PARTIAL_LINKER} -r --force-group-allocation -o ${isolated}.partial $<TARGET_OBJECTS:${name}_compile>
     COMMAND ${CMAKE_OBJCOPY} ${visibility} ${isolated}.partial ${isolated}
     COMMAND ${CMAKE_COMMAND} -E rm -f ${isolated}.partial
     DEPENDS ${name}_compile $<TARGET_OBJECTS:${name}_compile>

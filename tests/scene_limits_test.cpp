@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/import/imported_mesh.h"
+#include "core/import/mesh_file.h"
 #include "core/printable.h"
 #include "core/regular_file.h"
 #include "core/scene_file/json_parse.h"
@@ -171,6 +173,37 @@ TEST_F(HostileFiles, AMeshFileThatIsAFifoOrADeviceIsRefused) {
         std::fputs(text.c_str(), f);
         std::fclose(f);
         expect_load_error(scene, "shapes[0].file: " + (dir_ / file).string() + ": cannot open: " + kind + ", not a regular file");
+    }
+}
+
+TEST_F(HostileFiles, FilesAMeshFileNamesAreOpenedOnlyIfRegular) {
+    // An OBJ's mtllib naming /dev/zero: the materials are skipped with a note, not read forever.
+    fs::create_symlink("/dev/zero", dir_ / "zero.mtl");
+    const std::string obj = (dir_ / "m.obj").string();
+    {
+        std::FILE* f = std::fopen(obj.c_str(), "wb");
+        ASSERT_NE(f, nullptr);
+        std::fputs("mtllib zero.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", f);
+        std::fclose(f);
+    }
+    const wt::ImportedMesh mesh = wt::read_mesh_file(obj);
+    EXPECT_EQ(mesh.triangles.size(), 1u);
+    ASSERT_EQ(mesh.notes.size(), 1u);
+    EXPECT_NE(mesh.notes[0].find("a character device, not a regular file"), std::string::npos) << mesh.notes[0];
+    // A glTF buffer whose uri is a FIFO: an error naming it, not a wait for a writer.
+    ASSERT_EQ(::mkfifo((dir_ / "buffer.bin").c_str(), 0600), 0);
+    const std::string gltf = (dir_ / "m.gltf").string();
+    {
+        std::FILE* f = std::fopen(gltf.c_str(), "wb");
+        ASSERT_NE(f, nullptr);
+        std::fputs(R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "buffer.bin", "byteLength": 36}]})", f);
+        std::fclose(f);
+    }
+    try {
+        wt::read_mesh_file(gltf);
+        ADD_FAILURE() << "no error";
+    } catch (const wt::MeshFileError& e) {
+        EXPECT_NE(std::string(e.what()).find("a FIFO, not a regular file"), std::string::npos) << e.what();
     }
 }
 

@@ -7,7 +7,7 @@
 # BUILD_DIR/fuzz-artifacts/ and its path printed: turn it into a test.
 # Prints, per target: runs, coverage (edges), corpus size and findings.
 set -uo pipefail
-build_dir=${1:?usage: run_fuzzers.sh BUILD_DIR SECONDS [TARGET...]}
+build_dir=$(cd "${1:?usage: run_fuzzers.sh BUILD_DIR SECONDS [TARGET...]}" && pwd)
 seconds=${2:?usage: run_fuzzers.sh BUILD_DIR SECONDS [TARGET...]}
 shift 2
 here=$(cd "$(dirname "$0")" && pwd)
@@ -21,7 +21,7 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 failed=0
 summary=()
 for target in "${targets[@]}"; do
-  binary=$build_dir/tests/fuzz/$target
+  binary=$build_dir/bin/$target
   [ -x "$binary" ] || { echo "run_fuzzers: $binary not built" >&2; exit 1; }
   corpus=$build_dir/fuzz-corpus/$target
   mkdir -p "$corpus"
