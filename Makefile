@@ -8,7 +8,18 @@ JOBS ?= $(shell nproc)
 SCENE ?= scenes/hexroom.json
 RENDER_DIR ?= renders
 
-.PHONY: render render-mesh reference tradeoff spp-series test test-long test-mpi bench bench-deps perf-gate perf-gate-update build deps configure clean
+#   make test-asan  the whole suite but the perf gate, built with AddressSanitizer + UBSan
+#   make test-tsan  the renderer's multi-threaded tests under ThreadSanitizer
+#   make fuzz       every libFuzzer target for FUZZ_SECONDS each (clang-14; tests/fuzz)
+SANITIZER_JOBS ?= $(JOBS)
+FUZZ_SECONDS ?= 300
+FUZZ_BUILD_DIR ?= build-fuzz
+ASAN_BUILD_DIR ?= build-asan
+TSAN_BUILD_DIR ?= build-tsan
+# The tests that run the thread pool: renders on several threads, the BVH build, the pool.
+TSAN_TESTS ?= ^(Determinism|AccelRender|EdgeSettings|WavefrontVsReference|ThreadPool|MemoryEstimate|Bvh\.BuildInvariantsAndDeterminism)\.
+
+.PHONY: render render-mesh reference tradeoff spp-series test test-long test-mpi test-asan test-tsan fuzz bench bench-deps perf-gate perf-gate-update build deps configure clean
 
 render: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target wavetrace
@@ -60,6 +71,27 @@ test-mpi: deps
 	cmake -S . -B $(MPI_BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DWAVETRACE_MPI=ON
 	cmake --build $(MPI_BUILD_DIR) -j $(JOBS) --target wavetrace
 	cd $(MPI_BUILD_DIR) && ctest --output-on-failure -L mpi
+
+# Sanitizer builds: their own build directories, Debug-free RelWithDebInfo (-O2 -g) so the
+# statistical tests stay within their timeouts. The perf gate counts instructions of the
+# Release build and is left out.
+test-asan: deps
+	cmake -S . -B $(ASAN_BUILD_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWAVETRACE_SANITIZE=address,undefined
+	cmake --build $(ASAN_BUILD_DIR) -j $(SANITIZER_JOBS)
+	cd $(ASAN_BUILD_DIR) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j $(JOBS) -LE 'long|perf'
+
+test-tsan: deps
+	cmake -S . -B $(TSAN_BUILD_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWAVETRACE_SANITIZE=thread
+	cmake --build $(TSAN_BUILD_DIR) -j $(SANITIZER_JOBS) --target render_test extremes_test kernels_test hostile_input_test
+	cd $(TSAN_BUILD_DIR) && TSAN_OPTIONS=halt_on_error=1 ctest --output-on-failure -j $(JOBS) -R '$(TSAN_TESTS)'
+
+# libFuzzer needs clang: clang-14 and its runtime libraries from Debian, installed only here.
+fuzz:
+	tools/install-deps.sh clang-14 libclang-rt-14-dev
+	CC=clang-14 CXX=clang++-14 cmake -S . -B $(FUZZ_BUILD_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWAVETRACE_FUZZ=ON -DWAVETRACE_BUILD_TESTS=OFF
+	cmake --build $(FUZZ_BUILD_DIR) -j $(SANITIZER_JOBS) --target fuzz_scene fuzz_cli fuzz_obj fuzz_ply fuzz_gltf
+	tests/fuzz/run_fuzzers.sh $(FUZZ_BUILD_DIR) $(FUZZ_SECONDS)
 
 # The benchmarks also install their own optional packages (Embree, the real model) and write
 # the benchmark mesh files (build/bench-data) first.

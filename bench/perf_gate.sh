@@ -3,6 +3,9 @@
 # valgrind's callgrind (deterministic for a given binary, unlike wall time on a shared
 # 2-core machine) and fails when one grows past the baseline by more than TOLERANCE percent,
 # or when a SIMD kernel stops beating the scalar one by the stated factor in this same run.
+# Each workload also prints a checksum of what it computed (hits, image, tree); it must equal
+# the baseline's and be the same for every ISA, so a kernel that does less work cannot pass as
+# a faster one.
 #
 #   bench/perf_gate.sh BUILD_DIR            check against bench/perf_gate_baseline.txt
 #   bench/perf_gate.sh BUILD_DIR --update   re-measure and rewrite the baseline (commit it,
@@ -20,7 +23,8 @@ scene=$here/../scenes/hexroom.json
 workload=$build_dir/bin/perf_gate_workload
 TOLERANCE=${TOLERANCE:-2}   # percent: callgrind counts move only when code or compiler does
 
-command -v valgrind >/dev/null || { echo "perf_gate: valgrind is not installed" >&2; exit 1; }
+# Loud, never a silent skip: CI installs valgrind (tools/install-deps.sh), so its absence is an error.
+command -v valgrind >/dev/null || { echo "perf_gate: FAILED: valgrind is not installed (tools/install-deps.sh installs it)" >&2; exit 1; }
 [ -x "$workload" ] || { echo "perf_gate: $workload not built" >&2; exit 1; }
 
 cases=()
@@ -31,24 +35,30 @@ for isa in scalar sse4 avx2; do
 done
 cases+=("build" "render/scalar" "render/avx2")
 
-count_instructions() {  # CASE -> instruction count of the collected region
-  local args
+measure() {  # CASE -> "INSTRUCTIONS CHECKSUM": the collected region's count, the workload's checksum
+  local args out count checksum
   IFS=/ read -r -a args <<< "$1"
-  valgrind --tool=callgrind --collect-atstart=no --callgrind-out-file=/dev/null \
-    "$workload" "$scene" "${args[@]}" 2>&1 >/dev/null | awk '/Collected :/ {print $NF}'
+  out=$(mktemp)
+  count=$(valgrind --tool=callgrind --collect-atstart=no --callgrind-out-file=/dev/null \
+    "$workload" "$scene" "${args[@]}" 2>&1 >"$out" | awk '/Collected :/ {print $NF}')
+  checksum=$(awk '$1 == "checksum" {print $2}' "$out")
+  rm -f "$out"
+  echo "$count $checksum"
 }
 
-declare -A measured
+declare -A measured checksum
 for c in "${cases[@]}"; do
-  measured[$c]=$(count_instructions "$c")
+  read -r measured[$c] checksum[$c] < <(measure "$c")
   [ -n "${measured[$c]}" ] || { echo "perf_gate: no count for $c" >&2; exit 1; }
+  [ -n "${checksum[$c]}" ] || { echo "perf_gate: no checksum for $c" >&2; exit 1; }
 done
 
 if [ "$mode" = "--update" ]; then
   {
     echo "# Instructions counted by bench/perf_gate.sh (callgrind). Regenerate with:"
     echo "#   bench/perf_gate.sh build --update"
-    for c in "${cases[@]}"; do echo "$c ${measured[$c]}"; done
+    echo "# CASE INSTRUCTIONS CHECKSUM"
+    for c in "${cases[@]}"; do echo "$c ${measured[$c]} ${checksum[$c]}"; done
   } > "$baseline"
   echo "perf_gate: wrote $baseline"
   exit 0
@@ -58,14 +68,36 @@ failures=0
 printf '%-36s %14s %14s %8s\n' case baseline measured change
 for c in "${cases[@]}"; do
   base=$(awk -v c="$c" '$1 == c {print $2}' "$baseline")
+  base_checksum=$(awk -v c="$c" '$1 == c {print $3}' "$baseline")
   if [ -z "$base" ]; then
     echo "perf_gate: $c missing from $baseline (run with --update)"; failures=$((failures + 1)); continue
   fi
   change=$(awk -v m="${measured[$c]}" -v b="$base" 'BEGIN {printf "%+.2f", 100 * (m - b) / b}')
   verdict=ok
   if awk -v ch="$change" -v tol="$TOLERANCE" 'BEGIN {exit !(ch > tol)}'; then verdict=SLOWER; failures=$((failures + 1)); fi
+  if [ "${checksum[$c]}" != "$base_checksum" ]; then
+    verdict="$verdict, CHECKSUM ${checksum[$c]} != baseline ${base_checksum:-none}"; failures=$((failures + 1))
+  fi
   printf '%-36s %14s %14s %7s%% %s\n' "$c" "$base" "${measured[$c]}" "$change" "$verdict"
 done
+
+# Every ISA computes the same bits (the kernels are tested for it): the same checksum per
+# workload whatever the ISA, and the BVH's packet traversal the same as its single-ray one.
+same_result() {  # CASE... : all must have the first one's checksum
+  local first=$1 c
+  for c in "$@"; do
+    if [ "${checksum[$c]}" != "${checksum[$first]}" ]; then
+      echo "checksum $c ${checksum[$c]} differs from $first ${checksum[$first]}: FAILED"; failures=$((failures + 1))
+    fi
+  done
+}
+for query in closest any; do
+  for layout in raypacket primpacket; do
+    same_result intersect/{scalar,sse4,avx2}/$layout/$query
+  done
+  same_result intersect/{scalar,sse4,avx2}/{bvh,bvhpackets}/$query
+done
+same_result render/scalar render/avx2
 
 # Ratios within this run: the SIMD kernels must keep their advantage over scalar.
 ratio() { awk -v a="${measured[$1]}" -v b="${measured[$2]}" 'BEGIN {printf "%.2f", a / b}'; }

@@ -70,6 +70,20 @@ Scene meshed_scene(SceneDescription description) {
     return build_scene(description);
 }
 
+// FNV-1a over the bytes of what a workload computed: printed as "checksum HEX" and compared by
+// perf_gate.sh with the baseline and across ISAs, so a kernel that skips work (and so counts
+// fewer instructions) fails the gate instead of passing as faster.
+struct Checksum {
+    uint64_t h = 1469598103934665603ull;
+    template <typename T>
+    void add(const T& value) {
+        unsigned char bytes[sizeof(T)];
+        std::memcpy(bytes, &value, sizeof(T));
+        for (unsigned char b : bytes) h = (h ^ b) * 1099511628211ull;
+    }
+    void print() const { std::printf("checksum %016llx\n", static_cast<unsigned long long>(h)); }
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -81,6 +95,9 @@ int main(int argc, char** argv) {
         const Bvh bvh = build_bvh(scene, {8, 8, 1});
         CALLGRIND_TOGGLE_COLLECT;
         std::printf("nodes %zu\n", bvh.stats().node_count);
+        Checksum sum;
+        sum.add(bvh.stats().node_count), sum.add(bvh.stats().leaf_count), sum.add(bvh.stats().sah_cost);
+        sum.print();
         return 0;
     }
     if (argc < 4) return usage();
@@ -103,6 +120,9 @@ int main(int argc, char** argv) {
         CALLGRIND_TOGGLE_COLLECT;
         render(scene, options, film);
         CALLGRIND_TOGGLE_COLLECT;
+        Checksum sum;
+        for (const float value : film.resolve()) sum.add(value);
+        sum.print();
         return 0;
     }
     if (what != "intersect" || argc != 6) return usage();
@@ -135,5 +155,11 @@ int main(int argc, char** argv) {
     std::size_t hit_count = 0;
     for (std::size_t i = 0; i < n; ++i) hit_count += query == "closest" ? prim[i] != kNoHit : occluded[i];
     std::printf("hits %zu\n", hit_count);
+    Checksum sum;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (query == "closest") sum.add(prim[i]), sum.add(prim[i] == kNoHit ? 0.0f : t[i]);
+        else sum.add(occluded[i]);
+    }
+    sum.print();
     return 0;
 }

@@ -81,6 +81,33 @@ TEST_F(ImageOutput, MissingDirectoryIsRefusedBeforeRendering) {
     EXPECT_NO_THROW(check_output_path(path("a.png")));
 }
 
+TEST_F(ImageOutput, AnOutputThatIsADirectoryIsRefusedBeforeRendering) {
+    fs::create_directories(path("existing_directory.png"));
+    try {
+        check_output_path(path("existing_directory.png"));
+        ADD_FAILURE() << "no error";
+    } catch (const ImageError& e) {
+        EXPECT_NE(std::string(e.what()).find("existing_directory.png: is a directory"), std::string::npos) << e.what();
+    }
+    EXPECT_NO_THROW(check_output_path(path("good.png")));
+}
+
+TEST_F(ImageOutput, ANameTooLongForTheTemporaryFileIsRefusedBeforeRendering) {
+    // 254 bytes fits the usual 255-byte limit; ".NAME.tmp-PID" beside it does not.
+    const std::string long_name = std::string(250, 'a') + ".png";
+    try {
+        check_output_path(path(long_name));
+        ADD_FAILURE() << "no error";
+    } catch (const ImageError& e) {
+        EXPECT_NE(std::string(e.what()).find("file name too long"), std::string::npos) << e.what();
+    }
+    // A name whose temporary file fits is written.
+    const std::string fits = std::string(200, 'a') + ".png";
+    EXPECT_NO_THROW(check_output_path(path(fits)));
+    write_image(path(fits), 2, 1, kPixels);
+    EXPECT_TRUE(fs::is_regular_file(path(fits)));
+}
+
 TEST_F(ImageOutput, ReplacingAnImageIsAtomicAndLeavesNoTemporaryFile) {
     write_image(path("a.png"), 2, 1, kPixels);
     write_image(path("a.png"), 2, 1, std::vector<float>(6, 0.25f));

@@ -109,9 +109,15 @@ TEST(TriangleIntersect, DegenerateTrianglesNeverHitNorProduceNaN) {
     t.push_back({0, 0, 0}, {1, 0, 0}, {2, 0, 0}, 0);  // collinear
     for (uint32_t i = 0; i < t.size(); ++i) {
         for (const glm::vec3 d : {glm::vec3(0, 0, -1), glm::vec3(0, 1, 0), glm::vec3(1, 0, 0)}) {
+            // A miss must leave the record as it was (the closest hit so far): a sentinel shows
+            // any write, NaN included.
             Hit h;
+            h.t = 5.0f, h.prim = 77, h.u = 0.25f, h.v = 0.5f;
             EXPECT_FALSE(intersect_triangle(t, i, Ray{glm::vec3(0.5f, 0.0f, 1.0f) - d, d}, h)) << "triangle " << i;
-            EXPECT_FALSE(std::isnan(h.t));
+            EXPECT_EQ(h.t, 5.0f);
+            EXPECT_EQ(h.prim, 77u);
+            EXPECT_EQ(h.u, 0.25f);
+            EXPECT_EQ(h.v, 0.5f);
         }
     }
 }

@@ -1,7 +1,8 @@
 # Numerics at the extremes and the statistical verification of the estimators. Included from
 # tests/CMakeLists.txt, after wavetrace_test() is defined.
 #
-#   extremes_test            deterministic checks at the edges of the number line and of the
+#   extremes_test            (extremes_*_test.cpp, one file per concept, extremes_helpers.h)
+#                            deterministic checks at the edges of the number line and of the
 #                            settings: parallel and 1-ulp rays, degenerate triangles, signed
 #                            zeros, far/tiny/huge spheres, self-intersection of spawned rays,
 #                            index-matched glass, Oren-Nayar at grazing view, overflow to Inf,
@@ -14,7 +15,8 @@
 #                            larger image. Labelled `long`, so `make test` (ctest -LE long)
 #                            skips it; run it with `ctest -L long`.
 
-wavetrace_test(extremes_test extremes_test.cpp)
+wavetrace_test(extremes_test extremes_triangles_test.cpp extremes_spheres_test.cpp extremes_spawned_rays_test.cpp
+               extremes_glass_test.cpp extremes_oren_nayar_test.cpp extremes_film_test.cpp extremes_settings_test.cpp)
 wavetrace_test(statistical_test statistical_test.cpp)
 
 # Not through wavetrace_test(): gtest_discover_tests() registers the tests at build time, so

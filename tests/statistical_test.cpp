@@ -33,6 +33,7 @@
 #include "core/sampling/rng.h"
 #include "core/sampling/sampling.h"
 #include "kernels/isa/intersect_dispatch.h"
+#include "control_render.h"
 #include "render_helpers.h"
 #include "statistics.h"
 #include "test_scenes.h"
@@ -397,41 +398,6 @@ TEST(WhiteFurnace, RussianRouletteOnAndOffGiveTheSameMean) {
 
 // ---- render regression: low-spp wavefront against a high-spp reference ---------------------------
 
-// Per pixel, the two-sample z-test of the means of films a and b, per channel at per-test
-// alpha 1e-3, with the per-sample variance pooled from both (under the hypothesis that both
-// estimate the same per-sample distribution, the larger sample estimates it best). Returns,
-// per pixel, whether any channel failed; prints the failures.
-std::vector<bool> failing_pixels(const Film& a, const Film& b, const char* label, const SceneDescription& replay_desc) {
-    const double z = test::normal_two_sided_quantile(1e-3);
-    const uint32_t width = uint32_t(a.width());
-    std::vector<bool> failing(std::size_t(a.width() * a.height()), false);
-    for (uint32_t p = 0; p < failing.size(); ++p) {
-        const double n1 = a.pixel_count(p), n2 = b.pixel_count(p);
-        const glm::dvec3 d = a.pixel_mean(p) - b.pixel_mean(p);
-        const glm::dvec3 pooled = ((n1 - 1.0) * a.pixel_sample_variance(p) + (n2 - 1.0) * b.pixel_sample_variance(p)) / (n1 + n2 - 2.0);
-        const glm::dvec3 v = pooled * (1.0 / n1 + 1.0 / n2);
-        for (int c = 0; c < 3; ++c) {
-            if (std::fabs(d[c]) > z * std::sqrt(v[c]) + 1e-9) {
-                failing[p] = true;
-                std::printf("%s: pixel (%u, %u) channel %d: %.5f vs %.5f (sd of the difference %.4f); replay: %s\n", label,
-                            p % width, p / width, c, a.pixel_mean(p)[c], b.pixel_mean(p)[c], std::sqrt(v[c]),
-                            test::replay_command("scenes/hexroom.json", replay_desc, p, 0).c_str());
-            }
-        }
-    }
-    return failing;
-}
-
-// z of the difference of two films' image sums, per channel (every sample pooled).
-glm::dvec3 image_sum_z(const Film& a, const Film& b) {
-    glm::dvec3 diff(0.0), var(0.0);
-    for (uint32_t p = 0; p < uint32_t(a.width() * a.height()); ++p) {
-        diff += a.pixel_mean(p) - b.pixel_mean(p);
-        var += a.pixel_sample_variance(p) / double(a.pixel_count(p)) + b.pixel_sample_variance(p) / double(b.pixel_count(p));
-    }
-    return diff / glm::sqrt(var);
-}
-
 // The wavefront renderer (the default ISA) at low spp against the reference integrator at 16x
 // the spp with an independent seed, on the hexroom, pixel by pixel.
 //
@@ -471,26 +437,7 @@ TEST(RenderRegression, LowSppWavefrontAgreesWithHighSppReferencePerPixel) {
         ASSERT_EQ(ref.film.pixel_count(p), uint32_t(high_spp));
     }
 
-    const std::vector<bool> wave_fails = failing_pixels(wave.film, ref.film, "wavefront vs reference", wave_desc);
-    const std::vector<bool> control_fails = failing_pixels(control.film, ref.film, "control vs reference", control_desc);
-    int wave_only = 0, control_only = 0, wave_total = 0, control_total = 0;
-    for (int p = 0; p < pixels; ++p) {
-        wave_total += wave_fails[p], control_total += control_fails[p];
-        wave_only += wave_fails[p] && !control_fails[p];
-        control_only += control_fails[p] && !wave_fails[p];
-    }
-    const int bound = test::binomial_upper_bound(wave_only + control_only, 0.5, 1e-3);
-    std::printf("failing pixels: wavefront %d, control %d (of %d); wavefront only %d, control only %d, bound %d "
-                "(the nominal binomial bound, which the control shows does not hold here: %d)\n",
-                wave_total, control_total, pixels, wave_only, control_only, bound,
-                test::binomial_upper_bound(pixels, 3e-3, 1e-6));
-    EXPECT_LT(wave_only, bound) << "the wavefront render fails more pixels than the reference integrator's own control";
-
-    const glm::dvec3 z_wave = image_sum_z(wave.film, ref.film), z_control = image_sum_z(control.film, ref.film);
-    for (int c = 0; c < 3; ++c) {
-        EXPECT_LE(std::fabs(z_wave[c]), 4.5) << "image sum, wavefront vs reference, channel " << c;
-        EXPECT_LE(std::fabs(z_control[c]), 4.5) << "image sum, control vs reference, channel " << c;
-    }
+    test::expect_agrees_as_well_as_the_control(wave.film, control.film, ref.film, wave_desc, control_desc);
 }
 
 }  // namespace

@@ -13,12 +13,15 @@
 #include "core/film/checkpoint.h"
 #include "core/film/film.h"
 #include "core/film/image_output.h"
+#include "core/printable.h"
 #include "core/scene.h"
 #include "core/scene_file/scene_loader.h"
 #include "core/scene_hash.h"
+#include "cli_values.h"
 #include "debug_sample.h"
 #include "interrupt.h"
 #include "kernels/isa/intersect_dispatch.h"
+#include "kernels/memory_estimate.h"
 #include "kernels/progressive_render.h"
 #include "progress_display.h"
 #include "render_checkpoint.h"
@@ -37,13 +40,13 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
     cmd->add_option("-o,--output", o.outputs,
                     "Output image; repeat for several. .exr/.hdr: linear float, .png/.jpg: sRGB 8-bit "
                     "(default: SCENE's name with .png, in the current directory)");
-    cmd->add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, 1 << 20));
-    cmd->add_option("--shadow-rays", o.shadow_rays, "Shadow rays per diffuse hit")->check(CLI::Range(1, 1024));
-    cmd->add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, 65536));
-    cmd->add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, 65536));
-    cmd->add_option("--seed", o.seed, "Random seed");
+    cmd->add_option("--spp", o.spp, "Samples per pixel")->transform(decimal_integer(1, 1 << 20));
+    cmd->add_option("--shadow-rays", o.shadow_rays, "Shadow rays per diffuse hit")->transform(decimal_integer(1, 1024));
+    cmd->add_option("--width", o.width, "Image width in pixels")->transform(decimal_integer(1, 65536));
+    cmd->add_option("--height", o.height, "Image height in pixels")->transform(decimal_integer(1, 65536));
+    cmd->add_option("--seed", o.seed, "Random seed")->transform(decimal_integer(0, UINT64_MAX));
     cmd->add_option("--threads", o.render.threads, "Worker threads (default: one per hardware thread)")
-        ->check(CLI::Range(1, 1024));
+        ->transform(decimal_integer(1, 1024));
     cmd->add_option("--integrator", o.integrator_name, "wavefront (fast) or reference (scalar per-path oracle)")
         ->check(CLI::IsMember({"wavefront", "reference"}));
     cmd->add_option("--triangle-test", o.triangle_test, "moller_trumbore (fast) or watertight (no leaks at shared edges)")
@@ -63,10 +66,10 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
     cmd->add_option("--accel", o.accel_name,
                     "Acceleration structure: auto (flat list for tiny scenes, else a BVH), bvh, or brute (flat list)")
         ->check(CLI::IsMember({"auto", "bvh", "brute"}));
-    cmd->add_option("--bvh-width", o.render.bvh.node_width, "Children per BVH node: 4 or 8")->check(CLI::IsMember({4, 8}));
-    cmd->add_option("--tile-size", o.render.tile_size, "Tile side in pixels")->check(CLI::Range(1, 65536));
+    cmd->add_option("--bvh-width", o.render.bvh.node_width, "Children per BVH node: 4 or 8")->transform(decimal_integer(4, 8))->check(CLI::IsMember({4, 8}));
+    cmd->add_option("--tile-size", o.render.tile_size, "Tile side in pixels")->transform(decimal_integer(1, 65536));
     cmd->add_option("--batch-paths", o.render.batch_paths, "Camera paths per wavefront batch")
-        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
+        ->transform(decimal_integer(1, uint64_t(1) << 24));
     cmd->add_option("--debug-sample", o.debug_sample,
                     "X,Y,S: trace only sample S of pixel (X,Y) with the reference integrator and print every vertex");
     cmd->add_option("--time-limit", o.time_limit,
@@ -104,13 +107,6 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
 }
 
 namespace {
-
-// Physical memory, to refuse an image whose film cannot fit before trying to allocate it.
-double physical_memory_bytes() {
-    const long pages = sysconf(_SC_PHYS_PAGES);
-    const long page_size = sysconf(_SC_PAGE_SIZE);
-    return pages > 0 && page_size > 0 ? double(pages) * double(page_size) : 0.0;
-}
 
 void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.spp) s.spp = *o.spp;
@@ -178,20 +174,13 @@ int run_render_command(RenderCommandOptions& o) {
         if (!std::all_of(o.outputs.begin(), o.outputs.end(), is_checkpoint_path)) check_image_writer_available();
         if (o.render.aovs.any() && !o.quiet && std::none_of(o.outputs.begin(), o.outputs.end(), holds_layers))
             std::cerr << "wavetrace: note: --aov layers are written to .exr outputs only, and none was given\n";
-        const double film_bytes = Film::bytes_needed(settings.width, settings.height, film_channels.size());
-        const double memory = physical_memory_bytes();
-        if (memory > 0.0 && film_bytes > 0.5 * memory) {
-            std::ostringstream msg;
-            msg << settings.width << "x" << settings.height << " image needs " << with_si_prefix(film_bytes)
-                << "B of film memory, more than half of this machine's " << with_si_prefix(memory) << "B";
-            throw std::runtime_error(msg.str());
-        }
-
         o.render.integrator = o.integrator_name == "reference" ? Integrator::reference : Integrator::wavefront;
         if (o.isa_name != "auto") {
             o.render.isa = parse_isa(o.isa_name);
             if (!cpu_supports(*o.render.isa)) throw std::runtime_error("--isa " + o.isa_name + ": this CPU does not support it");
         }
+        const std::string memory = memory_problem(estimate_render_memory(scene, o.render), available_memory_bytes());
+        if (!memory.empty()) throw std::runtime_error(memory);
         ReferenceErrorLog error_log(o.error, settings.width, settings.height);
         RenderSession session(scene, o.render);
 #if WAVETRACE_MPI
@@ -256,7 +245,7 @@ int run_render_command(RenderCommandOptions& o) {
         error_log.finish(session.result().seconds, passes_done.end_sample - first, film, o.quiet ? nullptr : &std::cout);
         return passes_done.reason == StopReason::interrupted ? exit_interrupted : 0;
     } catch (const std::exception& e) {
-        std::cerr << "wavetrace: error: " << e.what() << "\n";
+        std::cerr << "wavetrace: error: " << printable(e.what()) << "\n";
 #if WAVETRACE_MPI
         if (MpiJob::active()) MpiJob::abort(1);  // the other ranks would wait for this one forever
 #endif

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli_values.h"
 #include "compare_command.h"
 #include "merge_command.h"
 #include "render_command.h"
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
     signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"wavetrace: a wavefront Monte Carlo path tracer for the CPU"};
     app.require_subcommand(1);
+    app.failure_message(wt::printable_failure_message);
     wt::RenderCommandOptions render_options;
     CLI::App* render = wt::add_render_command(app, render_options);
     wt::MergeCommandOptions merge_options;

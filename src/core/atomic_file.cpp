@@ -60,6 +60,16 @@ void check_output_directory(const std::string& path) {
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) throw FileWriteError(path + ": directory '" + dir.string() + "' does not exist");
     if (access(dir.c_str(), W_OK) != 0) throw FileWriteError(path + ": directory '" + dir.string() + "' is not writable");
+    // Found after rendering, these cost the whole render: rename() cannot replace a directory,
+    // and the temporary name is longer than the file's.
+    if (fs::is_directory(path, ec)) throw FileWriteError(path + ": is a directory, cannot be replaced by a file");
+    const long name_max = pathconf(dir.c_str(), _PC_NAME_MAX);
+    const std::size_t limit = name_max > 0 ? std::size_t(name_max) : 255;
+    const std::size_t temporary_name = fs::path(temporary_path_for(path)).filename().string().size();
+    if (temporary_name > limit)
+        throw FileWriteError(path + ": file name too long: the temporary file written beside it would have a " +
+                             std::to_string(temporary_name) + "-byte name, more than the " + std::to_string(limit) +
+                             " the directory allows");
 }
 
 const char* temporary_file_in_progress() { return in_progress_set.load() ? in_progress : ""; }

@@ -10,14 +10,23 @@
 
 namespace wt {
 
+// The camera's unit basis, in float as the renderer computes it (the loader checks it is one).
+struct CameraBasis {
+    glm::vec3 forward, right, up;
+};
+
+inline CameraBasis camera_basis(const CameraDescription& desc) {
+    const glm::vec3 forward = glm::normalize(desc.look_at - desc.eye);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, desc.up));
+    return {forward, right, glm::cross(right, forward)};
+}
+
 class Camera {
 public:
     Camera() = default;
     Camera(const CameraDescription& desc, int width, int height)
         : eye_(desc.eye), width_(float(width)), height_(float(height)) {
-        const glm::vec3 forward = glm::normalize(desc.look_at - desc.eye);
-        const glm::vec3 right = glm::normalize(glm::cross(forward, desc.up));
-        const glm::vec3 up = glm::cross(right, forward);
+        const auto [forward, right, up] = camera_basis(desc);
         const float half_height = std::tan(0.5f * desc.fov_degrees * 3.14159265358979f / 180.0f);
         const float half_width = half_height * width_ / height_;
         forward_ = forward;

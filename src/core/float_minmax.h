@@ -3,9 +3,11 @@
 // (-ffinite-math-only, which the renderer must not use), and the shading code calls them a few
 // times per path vertex: a call, a compare and a branch each time for one maxss / minss.
 //
-// The results are glibc's on x86-64 (sysdeps/x86_64/fpu/s_fmaxf.S, s_fminf.S, which are
-// maxss / minss with a NaN check): the larger (smaller) operand, y when the two compare equal
-// (so fmax(+0, -0) is -0 in both), and the other operand when exactly one is NaN.
+// The contract (tests/sampling_test.cpp): the larger (smaller) operand, the other operand when
+// exactly one is NaN, and y when the two compare equal, so fmax(+0, -0) is -0. C leaves the
+// sign of that zero unspecified, and std::fmax's differs between builds (glibc's x86-64
+// assembly, maxss with a NaN check, gives -0; the sanitizer build's did not): ours is the same
+// everywhere.
 
 namespace wt {
 

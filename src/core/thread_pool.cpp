@@ -1,18 +1,38 @@
 #include "core/thread_pool.h"
 
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
 namespace wt {
 
-ThreadPool::ThreadPool(int thread_count) {
-    for (int w = 1; w < thread_count; ++w) workers_.emplace_back([this, w] { worker_loop(w); });
+ThreadPool::ThreadPool(int thread_count, const ThreadFactory& start_thread) {
+    workers_.reserve(std::size_t(std::max(0, thread_count - 1)));
+    try {
+        for (int w = 1; w < thread_count; ++w) {
+            std::function<void()> loop = [this, w] { worker_loop(w); };
+            workers_.push_back(start_thread ? start_thread(std::move(loop)) : std::thread(std::move(loop)));
+        }
+    } catch (const std::system_error& e) {
+        // A throwing constructor runs no destructor: the workers already started would wait on
+        // start_ while it is destroyed under them, and join() would never return.
+        stop_workers();
+        throw std::runtime_error("cannot start " + std::to_string(thread_count) + " threads (" +
+                                 std::to_string(workers_.size() + 1) + " could be started: " + e.what() +
+                                 "); use fewer threads");
+    }
 }
 
-ThreadPool::~ThreadPool() {
+ThreadPool::~ThreadPool() { stop_workers(); }
+
+void ThreadPool::stop_workers() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         stopping_ = true;
     }
     start_.notify_all();
-    for (std::thread& t : workers_) t.join();
+    for (std::thread& t : workers_)
+        if (t.joinable()) t.join();
 }
 
 void ThreadPool::run_items(int worker) {

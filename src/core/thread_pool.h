@@ -3,6 +3,7 @@
 // out by an atomic counter, so the hot path takes no lock; the mutex is touched only to start a
 // job and to learn that it finished. The calling thread works too, as worker 0.
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
@@ -16,7 +17,13 @@ namespace wt {
 
 class ThreadPool {
 public:
-    explicit ThreadPool(int thread_count);
+    // Starts a thread running the given function; std::thread's constructor unless a test
+    // needs creation to fail. Throws (std::system_error) when no thread can be created.
+    using ThreadFactory = std::function<std::thread(std::function<void()>)>;
+
+    // Throws std::runtime_error naming how many threads could be started when not all of them
+    // can (a process limit, `ulimit -u`); the ones started are stopped and joined first.
+    explicit ThreadPool(int thread_count, const ThreadFactory& start_thread = {});
     ~ThreadPool();
     ThreadPool(const ThreadPool&) = delete;
     ThreadPool& operator=(const ThreadPool&) = delete;
@@ -28,6 +35,7 @@ public:
     void parallel_for(std::size_t count, const std::function<void(std::size_t item, int worker)>& fn);
 
 private:
+    void stop_workers();
     void worker_loop(int worker);
     void run_items(int worker);
 

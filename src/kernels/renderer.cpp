@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "kernels/isa/intersect_dispatch.h"
+#include "kernels/memory_estimate.h"
 #include "kernels/reference_integrator.h"
 #include "kernels/wavefront/wavefront_renderer.h"
 
@@ -61,11 +62,8 @@ void RenderSession::render_samples(Film& film, SampleRange range, const std::fun
         } else {
             auto& ws = workspaces_[std::size_t(worker)];
             if (!ws) {
-                // A batch holds at most batch_paths paths, or one sample of every pixel of a tile larger than that.
-                const std::size_t image_pixels = std::size_t(scene_.settings.width) * std::size_t(scene_.settings.height);
-                const std::size_t tile_pixels =
-                    std::min(image_pixels, std::size_t(options_.tile_size) * std::size_t(options_.tile_size));
-                const std::size_t capacity = std::max(options_.batch_paths, tile_pixels);
+                const RenderSettings& s = scene_.settings;
+                const std::size_t capacity = workspace_paths(s.width, s.height, s.spp, options_.tile_size, options_.batch_paths);
                 ws = std::make_unique<WavefrontWorkspace>(capacity, std::size_t(scene_.settings.shadow_rays),
                                                           options_.aovs.needs_path_data());
             }

@@ -17,24 +17,26 @@ endif()
 find_package(GTest REQUIRED)
 include(GoogleTest)
 
-set(WT_SIMD_TEST_SSE4 ${WT_SOURCE_DIR}/tests/simd_test_sse4.cpp)
-set(WT_SIMD_TEST_AVX2 ${WT_SOURCE_DIR}/tests/simd_test_avx2.cpp)
-set(WT_SIMD_TEST_AVX512 ${WT_SOURCE_DIR}/tests/simd_test_avx512.cpp)
-
-# Keep the TUs in ascending ISA order. Inline/template code the TUs share (gtest, libstdc++)
-# is emitted into each object compiled with that object's flags, and GNU ld keeps the *first*
-# copy in link order: ascending order means every shared function comes from the lowest ISA
-# that uses it, so the SSE4 tests never call an AVX-512 encoded std:: or gtest helper.
-# (The library itself is safe from this: it lives in per-ISA namespaces, see isa.h.)
-# Known limit of the run-time skip: the AVX2/AVX-512 TUs' static initialisers (gtest
-# registration) are compiled with their flags too, and GCC uses VEX-encoded moves there, so
-# the binary needs an AVX-capable CPU to start; beyond that, missing ISAs are GTEST_SKIPped.
-add_executable(simd_test ${WT_SIMD_TEST_SSE4} ${WT_SIMD_TEST_AVX2} ${WT_SIMD_TEST_AVX512})
-# Per-file ISA flags: these are the same flag sets the kernels use, one TU per ISA.
-set_source_files_properties(${WT_SIMD_TEST_SSE4} PROPERTIES COMPILE_OPTIONS "-msse4.2")
-set_source_files_properties(${WT_SIMD_TEST_AVX2} PROPERTIES COMPILE_OPTIONS "-mavx2;-mfma")
-set_source_files_properties(${WT_SIMD_TEST_AVX512} PROPERTIES
-    COMPILE_OPTIONS "-mavx512f;-mavx512dq;-mavx512bw;-mavx512vl")
+# Each TU is compiled with its ISA's flags and isolated (cmake/isa_object.cmake). The inline
+# and template code the TUs share (gtest, libstdc++) is emitted into each object with that
+# object's flags, and the linker kept the AVX-512 copy of vector<string>::emplace_back for the
+# gtest registration of every TU: SIGILL on a CPU without AVX-512 (in the sanitizer build,
+# where link order did not save us). Isolated, a TU's copies are local to it, so no other TU
+# and no library code can call them (tests/isa_isolation_test.sh checks the binaries).
+# Known limit: a TU's own static initialisers (its gtest registration) are compiled with its
+# flags; GCC uses VEX-encoded (AVX) instructions there, never EVEX (the same script checks),
+# so the binary starts on any AVX2 CPU; missing ISAs are GTEST_SKIPped at run time.
+include(${WT_SOURCE_DIR}/cmake/isa_object.cmake)
+wavetrace_isa_object(simd_test_sse4 simd_test_sse4 ${WT_SOURCE_DIR}/tests/simd_test_sse4.cpp
+                     FLAGS -msse4.2 -Wall -Wextra LINK wavetrace_simd GTest::gtest)
+wavetrace_isa_object(simd_test_avx2 simd_test_avx2 ${WT_SOURCE_DIR}/tests/simd_test_avx2.cpp
+                     FLAGS -mavx2 -mfma -Wall -Wextra LINK wavetrace_simd GTest::gtest)
+wavetrace_isa_object(simd_test_avx512 simd_test_avx512 ${WT_SOURCE_DIR}/tests/simd_test_avx512.cpp
+                     FLAGS -mavx512f -mavx512dq -mavx512bw -mavx512vl -Wall -Wextra LINK wavetrace_simd GTest::gtest)
+foreach(isa sse4 avx2 avx512)
+  target_include_directories(simd_test_${isa}_compile PRIVATE ${WT_SOURCE_DIR}/tests)
+endforeach()
+add_executable(simd_test ${simd_test_sse4} ${simd_test_avx2} ${simd_test_avx512})
 target_include_directories(simd_test PRIVATE ${WT_SOURCE_DIR}/tests)
 target_link_libraries(simd_test PRIVATE wavetrace_simd GTest::gtest_main)
 target_compile_features(simd_test PRIVATE cxx_std_17)

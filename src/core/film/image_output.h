@@ -24,7 +24,8 @@ ImageEncoding encoding_for_path(const std::string& path);
 bool holds_layers(const std::string& path);
 
 // Checked before rendering, so a typo in -o costs nothing: extension known, directory exists
-// and is writable.
+// and is writable, the path is not a directory, and the temporary file's name (longer than
+// the image's) fits the directory's name limit.
 void check_output_path(const std::string& path);
 
 // Also before rendering: the image I/O module loads (throws ImageError saying why not).

@@ -18,6 +18,7 @@
 #include <tiny_gltf.h>
 
 #include "core/import/gltf_materials.h"
+#include "core/regular_file.h"
 #include "core/import/mesh_file.h"
 
 namespace wt {
@@ -237,11 +238,35 @@ private:
     bool any_material_ = false;
 };
 
+// tinygltf's own FileExists opens the file, which blocks on a FIFO: stat() does not.
+bool referenced_file_exists(const std::string& path, void*) {
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0;
+}
+
+// A .bin (or image) file the glTF names, read as tinygltf would, but only if it is a regular
+// file within the mesh-file limit: a uri of /dev/zero or a FIFO would otherwise never return.
+bool read_referenced_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    try {
+        const RegularFile in = open_regular_file(path, kMaxMeshFileBytes);
+        out->resize(std::size_t(in.size));
+        if (in.size > 0 && std::fread(out->data(), 1, out->size(), in.file.get()) != out->size()) {
+            if (err) *err += path + ": cannot read all of its " + std::to_string(in.size) + " bytes\n";
+            return false;
+        }
+        return true;
+    } catch (const InputFileError& e) {
+        if (err) *err += std::string(e.what()) + "\n";
+        return false;
+    }
+}
+
 }  // namespace
 
 ImportedMesh read_gltf_file(const std::string& path) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skip_image, nullptr);
+    loader.SetFsCallbacks({&referenced_file_exists, &tinygltf::ExpandFilePath, &read_referenced_file, &tinygltf::WriteWholeFile, nullptr});
     tinygltf::Model model;
     std::string err, warn;
     {

@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
+
+#include "core/regular_file.h"
 
 namespace wt {
 namespace {
@@ -17,13 +16,14 @@ std::string lower_extension(const std::string& path) {
 }
 
 // The libraries' own messages for a missing file vary ("Cannot open file [x]", "File not found");
-// fopen's errno says why in the same words for every format.
+// errno says why in the same words for every format. A FIFO or device (/dev/zero) is refused
+// here, before a reader could block on it or read it without end.
 void check_readable(const std::string& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw MeshFileError(path + ": cannot open: is a directory");
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (!file) throw MeshFileError(path + ": cannot open: " + std::strerror(errno));
-    std::fclose(file);
+    try {
+        open_regular_file(path, kMaxMeshFileBytes);
+    } catch (const InputFileError& e) {
+        throw MeshFileError(e.what());
+    }
 }
 
 }  // namespace

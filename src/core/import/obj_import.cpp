@@ -13,6 +13,7 @@
 #include <tiny_obj_loader.h>
 
 #include "core/import/mesh_file.h"
+#include "core/regular_file.h"
 #include "core/import/obj_materials.h"
 #include "core/import/polygon_fan.h"
 
@@ -147,13 +148,34 @@ void split_vertices_by_normal(ObjBuilder& b) {
     }
 }
 
+// tinyobjloader's MTL reader, for regular files within the mesh-file limit only: `mtllib
+// /dev/zero` would otherwise read one endless line.
+class RegularMaterialFileReader : public tinyobj::MaterialReader {
+public:
+    explicit RegularMaterialFileReader(std::string dir) : dir_(dir), reader_(std::move(dir)) {}
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* ids,
+                    std::string* warn, std::string* err) override {
+        try {
+            open_regular_file(dir_ + name, kMaxMeshFileBytes);
+        } catch (const InputFileError& e) {
+            if (warn) *warn += "Failed to load material file(s). " + std::string(e.what()) + "\n";
+            return false;
+        }
+        return reader_(name, materials, ids, warn, err);
+    }
+
+private:
+    std::string dir_;
+    tinyobj::MaterialFileReader reader_;
+};
+
 }  // namespace
 
 ImportedMesh read_obj_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw MeshFileError(path + ": cannot open");
     const std::string base_dir = std::filesystem::path(path).parent_path().string();
-    tinyobj::MaterialFileReader mtl_reader(base_dir.empty() ? std::string("./") : base_dir + "/");
+    RegularMaterialFileReader mtl_reader(base_dir.empty() ? std::string("./") : base_dir + "/");
     ObjBuilder b;
     std::string warn, err;
     const bool ok = tinyobj::LoadObjWithCallback(in, obj_callbacks(), &b, &mtl_reader, &warn, &err);

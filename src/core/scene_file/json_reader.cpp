@@ -11,6 +11,11 @@
 namespace wt {
 namespace {
 
+// Doubles from here on round to infinity as floats (round to nearest: FLT_MAX plus half its
+// ulp, 2^128 - 2^103). Below it they round to at most FLT_MAX, so 3.4028235e38, FLT_MAX as
+// printed to 8 digits (and just above it as a double), is a float.
+constexpr double kFloatOverflow = 0x1.ffffffp+127;
+
 bool is_identifier(const std::string& key) {
     if (key.empty() || std::isdigit(static_cast<unsigned char>(key[0]))) return false;
     return std::all_of(key.begin(), key.end(),
@@ -57,6 +62,8 @@ std::string describe(const Json& j) {
     case Json::value_t::number_unsigned: return j.dump();
     case Json::value_t::array: {
         if (j.empty()) return "an empty array";
+        // More than 20 elements cannot print in 40 characters; do not print a million to find out.
+        if (j.size() > 20) return "an array of " + std::to_string(j.size()) + " elements";
         const std::string s = j.dump();
         return s.size() <= 40 ? s : "an array of " + std::to_string(j.size()) + " elements";
     }
@@ -75,7 +82,7 @@ std::string number_problem(const Json& j) {
     if (!j.is_number()) return "expected a number, got " + describe(j);
     const double v = j.get<double>();
     if (!std::isfinite(v)) return "must be a finite number, got " + describe(j);
-    if (std::fabs(v) > double(FLT_MAX)) return "is too large for a 32-bit float, got " + describe(j);
+    if (std::fabs(v) >= kFloatOverflow) return "is too large for a 32-bit float, got " + describe(j);
     return {};
 }
 

@@ -1,10 +1,6 @@
 #include "core/scene_file/scene_loader.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <memory>
-
+#include "core/regular_file.h"
 #include "core/scene_file/json_parse.h"
 #include "core/scene_file/scene_schema.h"
 
@@ -26,14 +22,12 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
 }
 
 SceneDescription load_scene_file(const std::string& path) {
-    // C stdio rather than ifstream: fopen reliably sets errno, which makes the message useful.
-    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!file) throw SceneError(path + ": cannot open: " + std::strerror(errno));
     std::string text;
-    char buffer[1 << 16];
-    std::size_t n;
-    while ((n = std::fread(buffer, 1, sizeof buffer, file.get())) > 0) text.append(buffer, n);
-    if (std::ferror(file.get())) throw SceneError(path + ": cannot read: " + std::strerror(errno));
+    try {
+        text = read_regular_file(path, kMaxSceneFileBytes);
+    } catch (const InputFileError& e) {
+        throw SceneError(e.what());
+    }
     return parse_scene_json(text, path);
 }
 

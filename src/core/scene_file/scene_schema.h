@@ -9,6 +9,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "core/scene_file/json_reader.h"
+#include "core/scene_file/material_names.h"
 #include "core/scene_description.h"
 
 namespace wt {
@@ -17,14 +18,15 @@ CameraDescription read_camera(const Reader& in, const Json& j, const std::string
 RenderSettings read_render(const Reader& in, const Json& j, const std::string& path);
 std::vector<Material> read_materials(const Reader& in, const Json& j, const std::string& path);
 // The index of the material named by the string j; fails naming the materials defined.
-uint32_t find_material(const Reader& in, const std::vector<Material>& materials, const Json& j,
-                       const std::string& path);
+uint32_t find_material(const Reader& in, const std::vector<Material>& materials, MaterialNames& names,
+                       const Json& j, const std::string& path);
 // A zero-area light would vanish from the light table without a word: fails naming it.
 void check_light_triangles(const Reader& in, const TriangleMesh& mesh, const std::string& path);
 // A shape's "transform" object (scale, then rotate, then translate; or a 4x4 matrix).
 glm::dmat4 read_transform(const Reader& in, const Json& j, const std::string& path);
 // "type": "mesh_file": the file is found relative to the scene file's directory.
-void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene);
+void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene,
+                          MaterialNames& names);
 // Needs scene.materials; appends to scene.meshes and scene.spheres (and to scene.materials and
 // scene.notes, for mesh files).
 void read_shapes(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene);

@@ -1,3 +1,8 @@
+#include <algorithm>
+
+#include <cmath>
+
+#include "core/materials/bsdf.h"
 #include "core/scene_file/scene_schema.h"
 
 // The materials section, and the lookup shapes use to name theirs.
@@ -46,6 +51,11 @@ Material read_material(const Reader& in, const std::string& name, const Json& j,
         const Json& sigma = in.required(j, "sigma", path);
         m.sigma = in.number(sigma, member_path(path, "sigma"));
         if (!(m.sigma >= 0.0f)) in.fail(member_path(path, "sigma"), "must be non-negative, got " + describe(sigma));
+        // sigma^2 overflows a float past about 1.8e19, and the coefficients become inf/inf.
+        const OrenNayarTerms terms = oren_nayar_terms(m.sigma);
+        if (!std::isfinite(terms.a) || !std::isfinite(terms.b))
+            in.fail(member_path(path, "sigma"), "is too large for the Oren-Nayar coefficients in 32-bit float "
+                                                "(sigma^2 overflows), got " + describe(sigma));
     }
     if (m.type == MaterialType::mirror) {
         if (const Json* r = in.optional(j, "reflectance"))
@@ -72,15 +82,17 @@ std::vector<Material> read_materials(const Reader& in, const Json& j, const std:
     return materials;
 }
 
-uint32_t find_material(const Reader& in, const std::vector<Material>& materials, const Json& j,
-                       const std::string& path) {
+uint32_t find_material(const Reader& in, const std::vector<Material>& materials, MaterialNames& names,
+                       const Json& j, const std::string& path) {
     const std::string name = in.text(j, path);
-    for (std::size_t i = 0; i < materials.size(); ++i)
-        if (materials[i].name == name) return uint32_t(i);
-    std::vector<std::string> names;
-    for (const Material& m : materials) names.push_back(m.name);
+    if (const std::optional<uint32_t> index = names.find(name)) return *index;
+    // A message of readable length, whatever the number of materials.
+    constexpr std::size_t kListed = 20;
+    std::vector<std::string> listed;
+    for (std::size_t i = 0; i < std::min(materials.size(), kListed); ++i) listed.push_back(materials[i].name);
+    if (materials.size() > kListed) listed.push_back("... " + std::to_string(materials.size()) + " in all");
     in.fail(path, "no material named " + Json(name).dump() + " (defined: " +
-                      (names.empty() ? std::string("none") : join(names)) + ")");
+                      (listed.empty() ? std::string("none") : join(listed)) + ")");
 }
 
 }  // namespace wt

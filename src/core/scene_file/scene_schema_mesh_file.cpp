@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <utility>
 
@@ -6,6 +7,7 @@
 #include "core/import/mesh_file.h"
 #include "core/import/place_mesh.h"
 #include "core/scene_file/scene_schema.h"
+#include "core/scene_file/triangle_size.h"
 
 // "type": "mesh_file": a shape whose triangles come from an OBJ, PLY or glTF file.
 
@@ -27,10 +29,9 @@ NormalsMode read_normals_mode(const Reader& in, const Json& j, const std::string
 // twice shares its materials and a scene can override one of them by defining its name.
 // Returns our index for each of the file's materials, and for "none" (the last entry).
 std::vector<uint32_t> add_file_materials(const ImportedMesh& mesh, const std::string& file, SceneDescription& scene,
-                                         std::vector<std::string>& unmapped) {
+                                         MaterialNames& names, std::vector<std::string>& unmapped) {
     const auto index_of = [&](const Material& m) {
-        for (std::size_t i = 0; i < scene.materials.size(); ++i)
-            if (scene.materials[i].name == m.name) return uint32_t(i);
+        if (const std::optional<uint32_t> existing = names.find(m.name)) return *existing;
         scene.materials.push_back(m);
         return uint32_t(scene.materials.size() - 1);
     };
@@ -95,7 +96,8 @@ void split_by_material(const ImportedMesh& mesh, const std::vector<uint32_t>& ou
 
 }  // namespace
 
-void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene) {
+void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene,
+                          MaterialNames& names) {
     in.check_keys(j, path, {"type", "file", "material", "transform", "normals"}, " for a mesh_file");
     const std::string file_path = member_path(path, "file");
     const std::string file = in.text(in.required(j, "file", path), file_path);
@@ -107,7 +109,7 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
     const std::string material_path = member_path(path, "material");
     const Json& material = in.required(j, "material", path);
     const bool from_file = material.is_string() && material.get<std::string>() == kFromFile;
-    const uint32_t scene_material = from_file ? 0 : find_material(in, scene.materials, material, material_path);
+    const uint32_t scene_material = from_file ? 0 : find_material(in, scene.materials, names, material, material_path);
     glm::dmat4 transform(1.0);
     if (const Json* t = in.optional(j, "transform")) transform = read_transform(in, *t, member_path(path, "transform"));
     NormalsMode normals = NormalsMode::file;
@@ -133,7 +135,7 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
     const std::size_t first_new = scene.meshes.size();
     if (from_file) {
         std::vector<std::string> unmapped;
-        const std::vector<uint32_t> ours = add_file_materials(mesh, file, scene, unmapped);
+        const std::vector<uint32_t> ours = add_file_materials(mesh, file, scene, names, unmapped);
         if (!unmapped.empty()) scene.notes.push_back(note + "not mapped from its materials: " + join(unmapped));
         split_by_material(mesh, ours, scene.meshes);
     } else {
@@ -148,10 +150,16 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
     for (std::size_t i = first_new; i < scene.meshes.size(); ++i) {
         const TriangleMesh& part = scene.meshes[i];
         if (!scene.materials[part.material].is_emissive()) continue;
-        for (const auto& tri : part.triangles)
-            if (is_sliver(part.vertices[tri[0]], part.vertices[tri[1]], part.vertices[tri[2]]))
+        for (const auto& tri : part.triangles) {
+            const glm::vec3 &a = part.vertices[tri[0]], &b = part.vertices[tri[1]], &c = part.vertices[tri[2]];
+            const float cross = float_cross_length(a, b, c);
+            if (is_sliver(a, b, c) || cross == 0.0f)
                 in.fail(file_path, resolved + ": an emissive triangle (material " + Json(scene.materials[part.material].name).dump() +
                                        ") is too thin to be sampled as a light");
+            if (!std::isfinite(cross))
+                in.fail(file_path, resolved + ": an emissive triangle (material " + Json(scene.materials[part.material].name).dump() +
+                                       ") has an area that overflows a 32-bit float");
+        }
     }
 }
 

@@ -3,6 +3,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/camera.h"
 #include "core/scene_file/scene_schema.h"
 
 // The camera and render sections.
@@ -34,6 +35,24 @@ CameraDescription read_camera(const Reader& in, const Json& j, const std::string
     if (sine <= 1e-6)
         in.fail(member_path(path, "up"), "must not be parallel to the view direction (look_at - eye = " +
                                              format_vec3(forward) + "), got " + format_vec3(up));
+
+    // The renderer builds the basis in float, where 1e-30 squares to 0 and 1e20 to infinity:
+    // a basis that is not unit length there renders a black image, so refuse it here.
+    const auto unit = [](const glm::vec3& v) {
+        const float length = glm::length(v);
+        return std::isfinite(length) && std::fabs(length - 1.0f) < 1e-3f;
+    };
+    const glm::vec3 difference = camera.look_at - camera.eye;
+    if (!std::isfinite(difference.x) || !std::isfinite(difference.y) || !std::isfinite(difference.z))
+        in.fail(member_path(path, "look_at"), "look_at - eye overflows a 32-bit float (eye " + format_vec3(camera.eye) +
+                                                  ", look_at " + format_vec3(camera.look_at) + ")");
+    const CameraBasis basis = camera_basis(camera);
+    if (!unit(basis.forward))
+        in.fail(member_path(path, "look_at"), "look_at - eye = " + format_vec3(difference) +
+                                                  " cannot be normalised in 32-bit float (too short or too long)");
+    if (!unit(basis.right) || !unit(basis.up))
+        in.fail(member_path(path, "up"), "cannot be used in 32-bit float: cross(forward, up) cannot be normalised "
+                                         "(up too short or too long), got " + format_vec3(camera.up));
     return camera;
 }
 

@@ -92,13 +92,14 @@ Sphere read_sphere(const Reader& in, const Json& j, const std::string& path) {
     return s;
 }
 
-void read_shape(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene) {
+void read_shape(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene,
+                MaterialNames& names) {
     in.expect_object(j, path);
     if (!j.contains("type"))
         in.fail(member_path(path, "type"), std::string("required key is missing (one of ") + kShapeTypes + ")");
     const std::string type_path = member_path(path, "type");
     const std::string type = in.text(j.at("type"), type_path);
-    if (type == "mesh_file") return read_mesh_file_shape(in, j, path, scene);
+    if (type == "mesh_file") return read_mesh_file_shape(in, j, path, scene, names);
     const std::string context = " for a " + type;
     if (type == "quad") in.check_keys(j, path, {"type", "vertices", "material"}, context);
     else if (type == "mesh") in.check_keys(j, path, {"type", "vertices", "triangles", "material"}, context);
@@ -106,7 +107,7 @@ void read_shape(const Reader& in, const Json& j, const std::string& path, SceneD
     else in.fail(type_path, std::string("unknown shape type (allowed: ") + kShapeTypes + "), got " + describe(j.at("type")));
 
     const std::string material_path = member_path(path, "material");
-    const uint32_t material = find_material(in, scene.materials, in.required(j, "material", path), material_path);
+    const uint32_t material = find_material(in, scene.materials, names, in.required(j, "material", path), material_path);
     const Material& m = scene.materials[material];
 
     if (type == "sphere") {
@@ -134,17 +135,24 @@ void check_light_triangles(const Reader& in, const TriangleMesh& mesh, const std
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& tri = mesh.triangles[t];
         const glm::vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
-        if (triangle_size(a, b, c).degenerate() || is_sliver(a, b, c))
+        const std::string vertices = " (vertices " + format_vec3(a) + ", " + format_vec3(b) + ", " + format_vec3(c) + ")";
+        const float cross = float_cross_length(a, b, c);
+        if (triangle_size(a, b, c).degenerate() || is_sliver(a, b, c) || cross == 0.0f)
             in.fail(element_path(member_path(path, "triangles"), t),
-                    "degenerate light: emissive triangle " + std::to_string(t) + " has zero area (vertices " +
-                        format_vec3(a) + ", " + format_vec3(b) + ", " + format_vec3(c) + ")");
+                    "degenerate light: emissive triangle " + std::to_string(t) + " has zero area" +
+                        (cross == 0.0f ? " in 32-bit float" : "") + vertices);
+        if (!std::isfinite(cross))
+            in.fail(element_path(member_path(path, "triangles"), t),
+                    "light too large: emissive triangle " + std::to_string(t) +
+                        " has an area that overflows a 32-bit float" + vertices);
     }
 }
 
 void read_shapes(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene) {
     in.expect_array(j, path);
     if (j.empty()) in.fail(path, "a scene needs at least one shape, got an empty array");
-    for (std::size_t i = 0; i < j.size(); ++i) read_shape(in, j[i], element_path(path, i), scene);
+    MaterialNames names(scene.materials);
+    for (std::size_t i = 0; i < j.size(); ++i) read_shape(in, j[i], element_path(path, i), scene, names);
 }
 
 

@@ -21,4 +21,11 @@ inline TriangleSize triangle_size(const glm::vec3& a, const glm::vec3& b, const 
     return {glm::length(glm::cross(db - da, dc - da)), longest};
 }
 
+// |cross(b - a, c - a)| in float, as the light table computes a light's area: it can be 0 (legs
+// of 1e-12 square to 1e-24, whose square underflows) or infinite (legs of 1e20) where the double
+// test above sees a fine triangle.
+inline float float_cross_length(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    return glm::length(glm::cross(b - a, c - a));
+}
+
 }  // namespace wt

@@ -106,6 +106,14 @@ struct WavefrontWorkspace {
     HitQueue hits;
     ShadowQueue shadows;
 
+    // What the constructor allocates, per path: the path table (2 x 4 + 8 + 3 x 4 bytes, and the
+    // first surface with AOVs), two ray queues (10 x 4 + 4 + 1), the hits (3 x 4 + 4); per shadow
+    // ray (10 x 4 + 4 + 1).
+    static constexpr std::size_t bytes_needed(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs) {
+        const std::size_t path_table = 28 + (with_aovs ? sizeof(FirstSurface) : 0);
+        return batch_paths * (path_table + 2 * 45 + 16) + batch_paths * shadow_rays_per_hit * 45;
+    }
+
     WavefrontWorkspace(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs) {
         paths.resize(batch_paths, with_aovs);
         rays.reserve(batch_paths);

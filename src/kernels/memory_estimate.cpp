@@ -1,0 +1,105 @@
+#include "kernels/memory_estimate.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "kernels/accel/bvh_view.h"
+#include "kernels/accel/sah_builder.h"
+#include "kernels/isa/intersect_dispatch.h"
+#include "kernels/wavefront/ray_queues.h"
+#include "kernels/wavefront/wavefront_renderer.h"
+
+namespace wt {
+
+std::size_t workspace_paths(int width, int height, int spp, int tile_size, std::size_t batch_paths) {
+    // The last column and row of tiles are narrower, and a smaller tile takes more samples per
+    // batch: ask every tile shape the image has.
+    const int widths[2] = {std::min(width, tile_size), width % tile_size};
+    const int heights[2] = {std::min(height, tile_size), height % tile_size};
+    std::size_t most = 0;
+    for (const int w : widths)
+        for (const int h : heights)
+            if (w > 0 && h > 0) {
+                const Tile tile{0, 0, w, h};
+                most = std::max(most, std::size_t(tile.pixel_count()) * samples_per_batch(tile, batch_paths, spp));
+            }
+    return most;
+}
+
+namespace {
+
+// Per primitive at the build's peak (bvh_build.cpp): its leaf block and its build record
+// (rows and rows - 1 floats), a PrimRef, at most two binary nodes, and the wide nodes, which
+// the collapse reserves at one per four primitives.
+double bvh_bytes(const Scene& scene, const RenderOptions& options) {
+    const double primitives = double(scene.primitive_count());
+    const double rows = scene.settings.accuracy.triangles == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
+    const double node = options.bvh.node_width == 4 ? sizeof(BvhNode<4>) : sizeof(BvhNode<8>);
+    return primitives * ((2.0 * rows - 1.0) * sizeof(float) + sizeof(PrimRef) + 2.0 * sizeof(BinaryNode) + node / 4.0);
+}
+
+// TriangleSoA: 21 float rows and a material index per triangle; SphereSoA: 4 and one.
+double geometry_bytes(const Scene& scene) {
+    return double(scene.triangles.size()) * (21 * sizeof(float) + sizeof(uint32_t)) +
+           double(scene.spheres.size()) * (4 * sizeof(float) + sizeof(uint32_t));
+}
+
+}  // namespace
+
+MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& options) {
+    MemoryEstimate e;
+    const RenderSettings& s = scene.settings;
+    e.film = Film::bytes_needed(s.width, s.height, aov_film_channels(options.aovs).size());
+    e.workers = options.threads > 0 ? options.threads : default_thread_count();
+    if (options.integrator == Integrator::wavefront)
+        e.queues_per_worker = double(WavefrontWorkspace::bytes_needed(
+            workspace_paths(s.width, s.height, s.spp, options.tile_size, options.batch_paths), std::size_t(s.shadow_rays),
+            options.aovs.needs_path_data()));
+    const int lanes = intersect_kernels(options.isa.value_or(best_supported_isa()), s.accuracy).width;
+    if (resolve_accel(options.accel, scene.primitive_count(), lanes) == Accel::bvh) e.bvh = bvh_bytes(scene, options);
+    e.geometry = geometry_bytes(scene);
+    return e;
+}
+
+double available_memory_bytes() {
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key;
+    double kib = 0.0;
+    std::string unit;
+    while (meminfo >> key >> kib >> unit)
+        if (key == "MemAvailable:") return kib * 1024.0;
+    const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && page_size > 0 ? double(pages) * double(page_size) : 0.0;
+}
+
+std::string format_bytes(double bytes) {
+    const char* units[] = {"B", "kB", "MB", "GB", "TB"};
+    int u = 0;
+    while (bytes >= 1000.0 && u < 4) bytes /= 1000.0, ++u;
+    char text[32];
+    std::snprintf(text, sizeof text, u == 0 ? "%.0f %s" : "%.1f %s", bytes, units[u]);
+    return text;
+}
+
+std::string memory_problem(const MemoryEstimate& e, double available) {
+    if (available <= 0.0 || e.to_allocate() <= available) return {};
+    std::ostringstream msg;
+    msg << "the render needs about " << format_bytes(e.total()) << " (film " << format_bytes(e.film) << ", "
+        << e.workers << " worker" << (e.workers > 1 ? "s" : "") << " x " << format_bytes(e.queues_per_worker)
+        << " of wavefront queues, BVH " << format_bytes(e.bvh) << ", geometry " << format_bytes(e.geometry)
+        << "), more than the " << format_bytes(available) << " of memory available; ";
+    // Name what dominates.
+    if (e.queues() >= e.film && e.queues() >= e.bvh)
+        msg << "lower --shadow-rays, --tile-size or --batch-paths, or use fewer --threads";
+    else if (e.film >= e.bvh)
+        msg << "lower --width and --height";
+    else
+        msg << "use --accel brute (no BVH, slower) or a smaller scene";
+    return msg.str();
+}
+
+}  // namespace wt

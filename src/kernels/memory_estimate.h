@@ -1,0 +1,48 @@
+#pragma once
+// What a render will allocate, estimated before anything is: the film, each worker's wavefront
+// queues, the BVH (with its build's temporaries) and the scene's geometry, held against the
+// memory the machine has available. A render that cannot fit is refused with the estimate and
+// the option to change, instead of dying of std::bad_alloc (or the OOM killer) minutes in.
+
+#include <cstddef>
+#include <string>
+
+#include "core/scene.h"
+#include "kernels/renderer.h"
+
+namespace wt {
+
+// Camera paths one worker's queues must hold: a batch is samples_per_batch() samples of every
+// pixel of a tile (wavefront_renderer.h), the most any tile of the image takes, so never more
+// than a tile's pixels times spp, however large --batch-paths is.
+std::size_t workspace_paths(int width, int height, int spp, int tile_size, std::size_t batch_paths);
+
+struct MemoryEstimate {
+    double film = 0.0;              // Film::bytes_needed
+    double queues_per_worker = 0.0; // WavefrontWorkspace::bytes_needed, 0 for the reference integrator
+    int workers = 1;
+    double bvh = 0.0;               // nodes, leaf blocks and the build's temporaries at their peak
+    double geometry = 0.0;          // the scene's primitive arrays (already allocated when this is asked)
+
+    double queues() const { return queues_per_worker * double(workers); }
+    // What the render has yet to allocate.
+    double to_allocate() const { return film + queues() + bvh; }
+    double total() const { return to_allocate() + geometry; }
+};
+
+// For the options' threads (0: one per hardware thread), integrator, kernels and accel.
+MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& options);
+
+// MemAvailable from /proc/meminfo (free memory plus what the kernel can reclaim), else the
+// machine's physical memory; 0 if neither is known.
+double available_memory_bytes();
+
+// "needs 11.3 GB (film 2.6 MB, 2 workers x 5.6 GB of wavefront queues, BVH 0 B, geometry 2.0 kB),
+// more than the 20.1 GB available; lower --shadow-rays or --tile-size, or use fewer --threads"
+// Empty when it fits (or nothing is known of the memory available).
+std::string memory_problem(const MemoryEstimate& estimate, double available);
+
+// "12.3 MB" and the like, for messages.
+std::string format_bytes(double bytes);
+
+}  // namespace wt

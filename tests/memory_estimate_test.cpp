@@ -1,0 +1,89 @@
+// The memory a render will take, estimated before it allocates: the wavefront queues sized to
+// what a tile needs, and a render too large for the machine refused with the option to change.
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "kernels/memory_estimate.h"
+#include "kernels/wavefront/tiles.h"
+#include "kernels/wavefront/wavefront_renderer.h"
+#include "test_scenes.h"
+
+namespace {
+
+// The most paths any batch of any tile holds, as render_wavefront_tile cuts them.
+std::size_t largest_batch(int width, int height, int spp, int tile_size, std::size_t batch_paths) {
+    std::size_t most = 0;
+    for (const wt::Tile& tile : wt::make_tiles(width, height, tile_size))
+        most = std::max(most, std::size_t(tile.pixel_count()) * wt::samples_per_batch(tile, batch_paths, spp));
+    return most;
+}
+
+TEST(MemoryEstimate, QueuesHoldExactlyTheLargestBatchOfAnyTile) {
+    // --batch-paths 16777216 on a 16x16, 1-spp image allocated queues for 16M paths (4.4 GB).
+    EXPECT_EQ(wt::workspace_paths(16, 16, 1, 16, std::size_t(1) << 24), 256u);
+    EXPECT_EQ(wt::workspace_paths(800, 800, 64, 16, 2048), 2048u);
+    // Edge tiles are narrower and take more samples per batch: 511 paths are one sample of a
+    // 16x16 tile but 31 of the 16x1 tiles of a 17-pixel-wide image's last column.
+    EXPECT_EQ(wt::workspace_paths(17, 16, 64, 16, 511), 16u * 31u);
+    for (const int width : {1, 7, 16, 17, 100})
+        for (const int height : {1, 5, 33})
+            for (const int spp : {1, 3, 64})
+                for (const int tile : {1, 4, 16, 512})
+                    for (const std::size_t batch : {std::size_t(1), std::size_t(100), std::size_t(511), std::size_t(2048), std::size_t(1) << 24})
+                        ASSERT_EQ(wt::workspace_paths(width, height, spp, tile, batch), largest_batch(width, height, spp, tile, batch))
+                            << width << "x" << height << " spp " << spp << " tile " << tile << " batch " << batch;
+}
+
+TEST(MemoryEstimate, AHugeBatchOnATinyImageRendersTheSameBitsWithSmallQueues) {
+    const wt::Scene scene = wt::build_scene(wt::test::hexroom(16, 16, 1));
+    wt::RenderOptions small, huge;
+    small.threads = huge.threads = 2;
+    huge.batch_paths = std::size_t(1) << 24;
+    EXPECT_LT(wt::estimate_render_memory(scene, huge).queues_per_worker, 1e6);
+    // One sample of each of the 256 pixels, which the default batch of 2048 also holds.
+    EXPECT_EQ(wt::estimate_render_memory(scene, huge).queues_per_worker,
+              double(wt::WavefrontWorkspace::bytes_needed(256, std::size_t(scene.settings.shadow_rays), false)));
+    EXPECT_EQ(wt::estimate_render_memory(scene, huge).queues_per_worker, wt::estimate_render_memory(scene, small).queues_per_worker);
+    wt::Film a(16, 16), b(16, 16);
+    wt::render(scene, small, a);
+    wt::render(scene, huge, b);
+    EXPECT_EQ(a.resolve(), b.resolve());
+}
+
+TEST(MemoryEstimate, ARenderThatCannotFitIsRefusedNamingTheOptionToChange) {
+    const wt::Scene scene = wt::build_scene(wt::test::hexroom(800, 800, 1));
+    wt::RenderOptions options;
+    options.threads = 2;
+    options.tile_size = 512;
+    wt::Scene many_shadow_rays = wt::build_scene(wt::test::hexroom(800, 800, 1));
+    many_shadow_rays.settings.shadow_rays = 1024;
+    const wt::MemoryEstimate e = wt::estimate_render_memory(many_shadow_rays, options);
+    // 512x512 paths of 1024 shadow rays each: about 12 GB per worker.
+    EXPECT_GT(e.queues_per_worker, 11e9);
+    EXPECT_LT(e.queues_per_worker, 13e9);
+    const std::string problem = wt::memory_problem(e, 16e9);
+    EXPECT_NE(problem.find("2 workers x 12.1 GB of wavefront queues"), std::string::npos) << problem;
+    EXPECT_NE(problem.find("lower --shadow-rays, --tile-size"), std::string::npos) << problem;
+    EXPECT_EQ(wt::memory_problem(e, 30e9), "");
+    // The film: width x height x its bytes per pixel, as Film says.
+    options.tile_size = 16;
+    const wt::MemoryEstimate film = wt::estimate_render_memory(scene, options);
+    EXPECT_EQ(film.film, wt::Film::bytes_needed(800, 800));
+    EXPECT_NE(wt::memory_problem(film, film.to_allocate() / 2).find("lower --width and --height"), std::string::npos);
+}
+
+TEST(MemoryEstimate, TheBvhIsCountedOnlyWhenOneIsBuilt) {
+    const wt::Scene scene = wt::build_scene(wt::test::hexroom(8, 8, 1));
+    wt::RenderOptions options;
+    options.accel = wt::Accel::brute;
+    EXPECT_EQ(wt::estimate_render_memory(scene, options).bvh, 0.0);
+    options.accel = wt::Accel::bvh;
+    const double estimate = wt::estimate_render_memory(scene, options).bvh;
+    const wt::Bvh bvh = wt::build_bvh(scene);
+    // The estimate covers the built tree and the build's temporaries on top.
+    EXPECT_GT(estimate, double(bvh.stats().node_bytes + bvh.stats().primitive_bytes));
+}
+
+}  // namespace
