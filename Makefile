@@ -90,7 +90,7 @@ test-tsan: deps
 fuzz:
 	tools/install-deps.sh clang-14 libclang-rt-14-dev
 	CC=clang-14 CXX=clang++-14 cmake -S . -B $(FUZZ_BUILD_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWAVETRACE_FUZZ=ON -DWAVETRACE_BUILD_TESTS=OFF
-	cmake --build $(FUZZ_BUILD_DIR) -j $(SANITIZER_JOBS) --target fuzz_scene fuzz_cli fuzz_obj fuzz_ply fuzz_gltf
+	cmake --build $(FUZZ_BUILD_DIR) -j $(SANITIZER_JOBS) --target fuzz_scene fuzz_cli fuzz_obj fuzz_ply fuzz_gltf fuzz_checkpoint
 	tests/fuzz/run_fuzzers.sh $(FUZZ_BUILD_DIR) $(FUZZ_SECONDS)
 
 # The benchmarks also install their own optional packages (Embree, the real model) and write

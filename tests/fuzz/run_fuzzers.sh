@@ -12,7 +12,7 @@ seconds=${2:?usage: run_fuzzers.sh BUILD_DIR SECONDS [TARGET...]}
 shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_scene fuzz_cli fuzz_obj fuzz_ply fuzz_gltf)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_scene fuzz_cli fuzz_obj fuzz_ply fuzz_gltf fuzz_checkpoint)
 artifacts=$build_dir/fuzz-artifacts
 mkdir -p "$artifacts"
 # Leaks are findings; an allocation over the RSS limit is an out-of-memory finding.
