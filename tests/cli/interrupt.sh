@@ -29,16 +29,20 @@ drain() {
   cat <&3 >>"$work/log" &
   drain=$!
 }
+# Sends the last SIGINT, waits for the render to exit and sets $status to its exit status.
+interrupt_and_wait() {
+  kill -INT "$pid"
+  wait "$pid"
+  status=$?
+  wait "$drain"
+  exec 3<&-
+}
 
 # One SIGINT: stops at a pass boundary, writes the image, exit 3.
 start_render
 wait_for "pass 1 done"
 drain
-kill -INT "$pid"
-wait "$pid"
-status=$?
-wait "$drain"
-exec 3<&-
+interrupt_and_wait
 [ "$status" -eq 3 ] || fail "one SIGINT: exit $status, expected 3"
 [ -s "$work/out.png" ] || fail "one SIGINT: no image written"
 grep -q "interrupted" "$work/stdout" || fail "one SIGINT: the summary does not say interrupted"
@@ -52,11 +56,7 @@ wait_for "pass 1 done"
 kill -INT "$pid"
 wait_for "interrupted:"  # signals do not queue: the second must come after the first was taken
 drain
-kill -INT "$pid"
-wait "$pid"
-status=$?
-wait "$drain"
-exec 3<&-
+interrupt_and_wait
 [ "$status" -eq 130 ] || fail "two SIGINTs: exit $status, expected 130"
 cmp -s "$work/out.png" "$work/before.png" || fail "two SIGINTs: the existing image changed"
 leftover=$(ls -A "$work" | grep -v -x -e out.png -e before.png -e fifo -e log -e stdout)
