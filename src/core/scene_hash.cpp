@@ -20,7 +20,7 @@ public:
             word(w);
         }
         uint64_t tail = 0;
-        std::memcpy(&tail, p, size);
+        if (size > 0) std::memcpy(&tail, p, size);  // an empty vector's data() may be null
         word(tail);
     }
     template <class T>
