@@ -142,6 +142,27 @@ TEST(Progressive, TheTimeLimitEndsAtTheLastPassBoundaryThatFits) {
     for (uint32_t p = 0; p < 64; ++p) ASSERT_EQ(film.pixel_count(p), 10u);
 }
 
+TEST(Progressive, TheFirstPassRunsEvenWhenTheLimitHasPassedBeforeItStarts) {
+    // Start-up (a slow sanitizer build, a loaded machine) may take longer than a short limit
+    // before the first pass: the render still gives a 1-spp image, not a black 0-spp one.
+    const SceneDescription d = test::hexroom(8, 8, 100, 1);
+    const Scene scene = build_scene(d);
+    RenderSession session(scene, options_for(Integrator::wavefront, 2));
+    Film film(8, 8);
+    double now = 0.0;
+    ProgressiveOptions po;
+    po.samples = {0, 100};
+    po.time_limit = 0.5;
+    po.clock = [&now] { return now += 1.0; };  // every reading is a second later
+    PassRecorder recorder;
+    const ProgressiveResult r = render_progressive(session, film, po, &recorder);
+    EXPECT_EQ(r.reason, StopReason::time_limit);
+    EXPECT_EQ(r.passes, 1u);
+    EXPECT_EQ(r.end_sample, 1u);
+    ASSERT_EQ(recorder.passes.size(), 1u);
+    EXPECT_EQ(recorder.passes[0].film_spp, 1u);
+}
+
 class StopAfterPasses : public PassRecorder {
 public:
     std::atomic<bool> stop{false};

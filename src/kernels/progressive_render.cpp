@@ -43,7 +43,10 @@ ProgressiveResult render_progressive(RenderSession& session, Film& film, const P
         const uint32_t rendered = result.end_sample - options.samples.begin;
         const double seconds_per_spp = rendered > 0 ? elapsed / rendered : 0.0;
         const double seconds_left = options.time_limit > 0.0 ? options.time_limit - elapsed : no_limit;
-        if (seconds_left <= 0.0) {
+        // The first pass always runs: a 0-spp image is no image, and only a measured pass says
+        // what fits. Checking the clock before it made a short limit depend on start-up time
+        // (a sanitizer build's took longer than the limit and rendered nothing).
+        if (rendered > 0 && seconds_left <= 0.0) {
             result.reason = StopReason::time_limit;
             break;
         }
