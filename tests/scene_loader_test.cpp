@@ -304,7 +304,7 @@ TEST_F(HexRoom, SpheresCameraAndSettings) {
     EXPECT_EQ(scene.settings.width, 800);
     EXPECT_EQ(scene.settings.height, 800);
     EXPECT_EQ(scene.settings.spp, 64);
-    EXPECT_EQ(scene.settings.shadow_rays, 3);
+    EXPECT_EQ(scene.settings.shadow_rays, 1);
     EXPECT_EQ(scene.settings.seed, 0u);
 }
 

@@ -39,7 +39,8 @@ void print_render_summary(std::ostream& out, const RenderSummary& m) {
     const RayCounts& c = result.counts;
     const double secs = result.seconds;
     out << "wavetrace: " << m.scene_path << " " << settings.width << "x" << settings.height << ", " << m.film_spp
-        << " spp, " << settings.shadow_rays << " shadow rays, " << m.integrator_name << " integrator"
+        << " spp, " << settings.shadow_rays << " shadow ray" << (settings.shadow_rays > 1 ? "s" : "") << ", "
+        << m.integrator_name << " integrator"
         << (m.options->integrator == Integrator::wavefront ? std::string(" (") + isa_name(result.isa) + " kernels)" : "")
         << ", " << result.threads << " thread" << (result.threads > 1 ? "s" : "") << "\n";
     out.precision(3);

@@ -69,7 +69,10 @@ struct RenderSettings {
     int width = 800;
     int height = 800;
     int spp = 64;            // samples per pixel
-    int shadow_rays = 3;     // M: light samples per diffuse hit
+    // M: light samples per diffuse hit. One, as in pbrt and Cycles: a scene whose error is in
+    // its indirect light (the hexroom's caustics) gains nothing from more, at their full cost
+    // (README, "The hexroom's trade").
+    int shadow_rays = 1;
     uint64_t seed = 0;       // every random number is keyed by (seed, pixel, sample, bounce, dim)
     int max_bounces = 64;    // hard cap; Russian roulette ends almost every path long before
     int rr_start_bounce = 3; // first bounce at which Russian roulette may end a path
