@@ -3,8 +3,9 @@
 // samples, so the film is an honest N-spp image there, to show, write, checkpoint or stop at.
 // Passes double the image's sample count (1, 1, 2, 4, ... spp) for quick previews, until a
 // pass would take longer than `pass_seconds`; with a time limit, no pass starts that the
-// measured speed says would end past it, except the first, which always runs. Where the passes fall never changes the image: each
-// pixel still receives its samples in ascending order into exact sums (core/film/film.h).
+// measured speed says would end past it, except the first, which always runs. Where the
+// passes fall never changes the image: each pixel still receives its samples in ascending
+// order into exact sums (core/film/film.h).
 
 #include <atomic>
 #include <cstdint>
