@@ -42,7 +42,7 @@ void measure_render(benchmark::State& state, const RenderOptions& options, bool 
     RayCounts total;
     for (auto _ : state) {
         // A fresh film each time: the film accumulates, and a render always starts from an empty one.
-        Film film(scene.settings.width, scene.settings.height);
+        Film film(scene.settings.width, scene.settings.height, render_film_channels(scene, options.aovs));
         if (progressive) {
             RenderSession session(scene, options);
             ProgressiveOptions passes;

@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
         const Scene scene = build_scene(description);
         RenderOptions options;
         if (argc == 5) options.aovs = parse_aov_list(argv[4]);
-        Film film(24, 24, aov_film_channels(options.aovs));
+        Film film(24, 24, render_film_channels(scene, options.aovs));
         options.threads = 1;
         options.isa = *isa;
         CALLGRIND_TOGGLE_COLLECT;

@@ -83,7 +83,7 @@ void expect_spawned_rays_leave(const Scene& scene, uint32_t prim, int hit_count,
         int bounce = 0;
         for (uint32_t material : {0u, 1u, 2u, 2u, 2u}) {
             const auto next = continue_path<DefaultEstimator>(single, single.materials[material], surface, incoming.direction,
-                                                              glm::vec3(1.0f), PathSeed{key, 0}, uint32_t(bounce++));
+                                                              glm::vec3(1.0f), PathSeed{key, 0}, uint32_t(bounce++), false);
             if (next) spawned.push_back(next->ray);
         }
         for (std::size_t i = 0; i < spawned.size(); ++i) {

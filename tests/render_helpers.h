@@ -34,7 +34,7 @@ inline RenderedFilm render_film(const SceneDescription& description, Integrator 
     options.tile_size = tile_size;
     options.batch_paths = batch_paths;
     options.isa = isa;
-    RenderedFilm out{Film(description.settings.width, description.settings.height), {}};
+    RenderedFilm out{Film(description.settings.width, description.settings.height, render_film_channels(scene, options.aovs)), {}};
     out.result = render(scene, options, out.film);
     return out;
 }

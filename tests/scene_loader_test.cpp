@@ -398,7 +398,8 @@ TEST(SceneErrors, UnknownCameraKey) {
 TEST(SceneErrors, UnknownRenderKey) {
     expect_scene_error(mutated([](Json& j) { j["render"]["samples"] = 4; }),
                        "render.samples: unknown key (allowed: width, height, spp, shadow_rays, seed, max_bounces, "
-                       "rr_start_bounce, triangle_test, sphere_test, fresnel, sampler, light_sampling, clamp_indirect)");
+                       "rr_start_bounce, triangle_test, sphere_test, fresnel, sampler, light_sampling, clamp_indirect, caustics, "
+                       "light_paths_per_pixel)");
 }
 
 TEST(SceneErrors, UnknownAccuracyChoice) {

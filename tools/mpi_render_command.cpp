@@ -27,7 +27,7 @@ void check_mpi_render_options(const RenderCommandOptions& o) {
 int run_render_on_mpi_ranks(const RenderCommandOptions& o, RenderSession& session, const Scene& scene,
                             CheckpointHeader header) {
     const RenderSettings& settings = scene.settings;
-    Film film(settings.width, settings.height);
+    Film film(settings.width, settings.height, render_film_channels(scene, AovSelection{}));
     const SampleRange samples{0, uint32_t(settings.spp)};
     std::string identity = "scene " + hash_to_hex(header.scene_hash) + ", " + std::to_string(settings.width) + "x" +
                            std::to_string(settings.height) + ", spp " + std::to_string(settings.spp);

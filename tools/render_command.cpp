@@ -59,6 +59,13 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
     cmd->add_option("--light-sampling", o.light_sampling, "nee (light samples only) or mis (light and BSDF samples, power heuristic)")
         ->check(CLI::IsMember({"nee", "mis"}));
+    cmd->add_option("--caustics", o.caustics,
+                    "Caustics seen directly (camera, diffuse, mirror or glass, light): path (the camera path finds them "
+                    "by chance) or light_tracing (light paths through the mirrors and glass, connected to the camera)")
+        ->check(CLI::IsMember({"path", "light_tracing"}));
+    cmd->add_option("--light-paths-per-pixel", o.light_paths_per_pixel,
+                    "With light tracing: light paths per sample, per pixel of the image (default 1)")
+        ->check(CLI::Range(1.0 / 1024, 64.0));
     cmd->add_option("--clamp-indirect", o.clamp_indirect, "Limit each indirect contribution to X per channel (0: off)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--isa", o.isa_name, "Intersection kernels: scalar, sse4, avx2, avx512 or auto (the best this CPU runs)")
@@ -121,6 +128,8 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.sampler) s.estimator.sampler = *parse_sampler(*o.sampler);
     if (o.light_sampling) s.estimator.light_sampling = *parse_light_sampling(*o.light_sampling);
     if (o.clamp_indirect) s.estimator.clamp_indirect = *o.clamp_indirect;
+    if (o.caustics) s.estimator.caustics = *parse_caustic_paths(*o.caustics);
+    if (o.light_paths_per_pixel) s.estimator.light_paths_per_pixel = float(*o.light_paths_per_pixel);
 }
 
 std::string default_output(const RenderCommandOptions& o, SampleRange part) {
@@ -142,7 +151,7 @@ int run_render_command(RenderCommandOptions& o) {
         const SampleRange part = o.samples ? parse_sample_range(*o.samples) : SampleRange{};
         const uint64_t scene_hash = scene_content_hash(description);
         if (!o.aov_list.empty()) o.render.aovs = parse_aov_list(o.aov_list);  // the CLI checked it
-        const std::vector<std::string> film_channels = aov_film_channels(o.render.aovs);
+        const std::vector<std::string> film_channels = film_channels_for(o.render.aovs, light_traces_caustics(description));
         std::optional<Checkpoint> resumed;
         if (o.resume) {
             RenderSettings& s = description.settings;

@@ -19,8 +19,9 @@ struct RenderCommandOptions {
     std::optional<int> spp, shadow_rays, width, height;
     std::optional<uint64_t> seed;
     std::optional<std::string> triangle_test, sphere_test, fresnel;
-    std::optional<std::string> sampler, light_sampling;
+    std::optional<std::string> sampler, light_sampling, caustics;
     std::optional<float> clamp_indirect;
+    std::optional<double> light_paths_per_pixel;
     RenderOptions render;
     std::string integrator_name = "wavefront";
     std::string isa_name = "auto";

@@ -53,6 +53,13 @@ void print_render_summary(std::ostream& out, const RenderSummary& m) {
         << with_si_prefix(double(c.camera_rays)) << ", bounce " << with_si_prefix(double(c.bounce_rays)) << ", shadow "
         << with_si_prefix(double(c.shadow_rays)) << " rays)\n";
     out << "  NaN/Inf samples  " << c.nonfinite_samples << "\n";
+    if (m.scene->light_traces_caustics) {
+        const double paths = double(std::max<uint64_t>(1, c.light_paths));
+        out << "  light tracing    " << with_si_prefix(double(c.light_paths)) << " light paths ("
+            << settings.estimator.light_paths_per_pixel << " per pixel and sample), " << double(c.light_rays) / paths
+            << " rays and " << double(c.camera_connections) / paths << " camera connections each, "
+            << c.dropped_splats << " NaN/Inf splats\n";
+    }
     if (result.accel == Accel::bvh) {
         const BvhStats& b = result.bvh;
         const double prims = double(std::max<std::size_t>(1, b.primitive_count));

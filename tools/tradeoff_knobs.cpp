@@ -16,6 +16,8 @@ void set_triangle_test(RenderSettings& s, const std::string& v) { s.accuracy.tri
 void set_sphere_test(RenderSettings& s, const std::string& v) { s.accuracy.spheres = *parse_sphere_test(v); }
 void set_sampler(RenderSettings& s, const std::string& v) { s.estimator.sampler = *parse_sampler(v); }
 void set_light_sampling(RenderSettings& s, const std::string& v) { s.estimator.light_sampling = *parse_light_sampling(v); }
+void set_caustics(RenderSettings& s, const std::string& v) { s.estimator.caustics = *parse_caustic_paths(v); }
+void set_light_paths(RenderSettings& s, const std::string& v) { s.estimator.light_paths_per_pixel = std::stof(v); }
 void set_clamp(RenderSettings& s, const std::string& v) { s.estimator.clamp_indirect = std::stof(v); }
 
 std::string shadow_rays(const RenderSettings& s) { return std::to_string(s.shadow_rays); }
@@ -26,11 +28,14 @@ std::string triangle_test(const RenderSettings& s) { return name_of(s.accuracy.t
 std::string sphere_test(const RenderSettings& s) { return name_of(s.accuracy.spheres); }
 std::string sampler(const RenderSettings& s) { return name_of(s.estimator.sampler); }
 std::string light_sampling(const RenderSettings& s) { return name_of(s.estimator.light_sampling); }
-std::string clamp(const RenderSettings& s) {
+std::string caustics(const RenderSettings& s) { return name_of(s.estimator.caustics); }
+std::string printed(float v) {
     std::ostringstream out;  // 4 -> "4", as the table writes it
-    out << s.estimator.clamp_indirect;
+    out << v;
     return out.str();
 }
+std::string light_paths(const RenderSettings& s) { return printed(s.estimator.light_paths_per_pixel); }
+std::string clamp(const RenderSettings& s) { return printed(s.estimator.clamp_indirect); }
 
 }  // namespace
 
@@ -47,6 +52,9 @@ const std::vector<Knob>& tradeoff_knobs() {
         {"light_sampling", {"nee", "mis"}, false, set_light_sampling, light_sampling},
         // 0 is off; the clamp trades bias (the mean drops where caustics are) for variance.
         {"clamp_indirect", {"0", "1", "4", "16"}, true, set_clamp, clamp},
+        {"caustics", {"path", "light_tracing"}, false, set_caustics, caustics},
+        // Only changes anything with light tracing: its work per sample against its noise.
+        {"light_paths_per_pixel", {"0.25", "0.5", "1", "2", "4"}, false, set_light_paths, light_paths},
     };
     return knobs;
 }

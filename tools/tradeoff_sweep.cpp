@@ -35,7 +35,7 @@ std::vector<Measurement> run_sweep(SceneDescription& description, const std::vec
             description.settings = scene_settings;
             for (std::size_t level = 0; level < levels; ++level) {
                 scene.settings.spp = plan.spp[level];
-                Film film(scene.settings.width, scene.settings.height);
+                Film film(scene.settings.width, scene.settings.height, render_film_channels(scene, plan.render.aovs));
                 const std::size_t k = i * levels + level;
                 seconds[k].push_back(render(scene, plan.render, film).seconds);
                 Measurement& m = measurements[k];

@@ -2,6 +2,7 @@
 // Pinhole camera: maps a film position (pixels, y down) to a primary ray.
 
 #include <cmath>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -32,6 +33,9 @@ public:
         forward_ = forward;
         right_ = right * half_width;
         up_ = up * half_height;
+        inv_half_width2_ = 1.0f / (half_width * half_width);
+        inv_half_height2_ = 1.0f / (half_height * half_height);
+        pixel_area_ = (2.0f * half_width / width_) * (2.0f * half_height / height_);
     }
 
     const glm::vec3& eye() const { return eye_; }
@@ -45,9 +49,34 @@ public:
         return {eye_, glm::normalize(forward_ + sx * right_ + sy * up_)};
     }
 
+    // Where the camera sees a point: the inverse of generate_ray. `importance` is what turns
+    // radiance arriving at the eye from a point on a surface into that pixel's estimate, per
+    // unit area of the surface and per cosine at it: the pixel value is the mean of the
+    // radiance over the pixel's area on the image plane (at distance 1), whose element is
+    // dA = dw / cos^3(theta) for the ray's angle theta to the view axis, and dw = cos dA_surface
+    // / dist^2, so a point contributes radiance * cos / dist^2 * importance, importance =
+    // 1 / (pixel area * cos^3 theta) (pbrt-v4's PerspectiveCamera::We, per pixel).
+    struct FilmPoint {
+        float x, y;        // film position, as generate_ray takes it
+        float importance;  // 1 / (pixel area * cos^3 theta)
+    };
+    // Empty for a point behind the eye or outside the image.
+    std::optional<FilmPoint> film_point(const glm::vec3& p) const {
+        const glm::vec3 v = p - eye_;
+        const float z = glm::dot(v, forward_);
+        if (!(z > 0.0f)) return std::nullopt;
+        const float sx = glm::dot(v, right_) * inv_half_width2_ / z;
+        const float sy = glm::dot(v, up_) * inv_half_height2_ / z;
+        const float x = 0.5f * (sx + 1.0f) * width_, y = 0.5f * (1.0f - sy) * height_;
+        if (!(x >= 0.0f && x < width_ && y >= 0.0f && y < height_)) return std::nullopt;
+        const float cos_theta = z / glm::length(v);
+        return FilmPoint{x, y, 1.0f / (pixel_area_ * cos_theta * cos_theta * cos_theta)};
+    }
+
 private:
     glm::vec3 eye_{0.0f}, forward_{1, 0, 0}, right_{0, -1, 0}, up_{0, 0, 1};
     float width_ = 1.0f, height_ = 1.0f;
+    float inv_half_width2_ = 1.0f, inv_half_height2_ = 1.0f, pixel_area_ = 4.0f;
 };
 
 }  // namespace wt

@@ -14,6 +14,11 @@ const char* name_of(SamplerKind s) {
 }
 const char* name_of(LightSampling l) { return l == LightSampling::mis ? "mis" : "nee"; }
 
+const char* name_of(CausticPaths c) { return c == CausticPaths::light_tracing ? "light_tracing" : "path"; }
+std::optional<CausticPaths> parse_caustic_paths(const std::string& s) {
+    return parse_one_of(s, {CausticPaths::path, CausticPaths::light_tracing});
+}
+
 std::optional<SamplerKind> parse_sampler(const std::string& s) {
     return parse_one_of(s, {SamplerKind::independent, SamplerKind::stratified, SamplerKind::sobol});
 }

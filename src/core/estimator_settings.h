@@ -21,16 +21,29 @@ enum class LightSampling : uint8_t {
     mis,  // light samples and the BSDF-sampled direction both count, power heuristic (Veach 1997)
 };
 
+// Who finds caustic paths seen directly: a diffuse surface the camera sees, lit by the lights
+// through one or more mirror or glass bounces (camera -> diffuse -> specular... -> light).
+enum class CausticPaths : uint8_t {
+    path,           // the camera path's BSDF sample, which must hit the light by chance
+    light_tracing,  // paths from the lights through the specular bounces, connected to the camera
+};
+
 struct EstimatorSettings {
     SamplerKind sampler = SamplerKind::stratified;
     LightSampling light_sampling = LightSampling::nee;
     // Per-channel upper bound on each indirect contribution (see clamp_indirect() in
     // core/estimator.h for exactly which); 0 means off.
     float clamp_indirect = 0.0f;
+    CausticPaths caustics = CausticPaths::path;
+    // With light tracing, light paths per pixel of the image and per sample: the light-tracing
+    // work per sample is this times width x height paths.
+    float light_paths_per_pixel = 1.0f;
 };
 
 const char* name_of(SamplerKind);
 const char* name_of(LightSampling);
+const char* name_of(CausticPaths);
+std::optional<CausticPaths> parse_caustic_paths(const std::string&);
 std::optional<SamplerKind> parse_sampler(const std::string&);
 std::optional<LightSampling> parse_light_sampling(const std::string&);
 

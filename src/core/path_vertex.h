@@ -201,21 +201,30 @@ private:
     float clamp_limit_;   // per shadow ray; infinite when this vertex's samples are not clamped
 };
 
+// With light tracing of caustics (Scene::light_traces_caustics, kernels/caustics), the light paths
+// estimate every path whose first vertex from the camera is diffuse and whose last bounce before
+// the light is a mirror or glass (camera -> diffuse -> anything -> specular -> light: caustics
+// seen directly, and the light they throw on to other surfaces), and the camera paths leave
+// exactly those out: the path space is split in two and each part has one estimator.
 struct PathContinuation {
     Ray ray;
     glm::vec3 throughput;
     // The next hit's emission is counted: always with mis, else only after a specular bounce
-    // (no light sample covered this direction).
+    // (no light sample covered this direction); never where the light paths count it.
     bool count_emission;
+    // Light tracing only (never set without it): the path's first hit was diffuse, so what a
+    // specular bounce of it finds is the light paths' to count.
+    bool first_hit_diffuse;
     float bsdf_pdf;  // mis: the direction's pdf if light samples competed for it, else 0 (emission_added)
 };
 
 // Samples the next direction from the BSDF and applies Russian roulette. Empty when the path
-// ends. `bounce` is the index of the vertex being shaded (0 = first hit).
+// ends. `bounce` is the index of the vertex being shaded (0 = first hit); `first_hit_diffuse` is
+// the incoming ray's (PathContinuation::first_hit_diffuse).
 template <typename E>
 inline std::optional<PathContinuation> continue_path(const Scene& scene, const Material& m, const SurfacePoint& surface,
                                                      const glm::vec3& d, const glm::vec3& throughput, const PathSeed& path,
-                                                     uint32_t bounce) {
+                                                     uint32_t bounce, bool first_hit_diffuse) {
     if (int(bounce) + 1 >= scene.settings.max_bounces) return std::nullopt;
     const typename E::Sampler random(path, bounce, uint32_t(scene.settings.shadow_rays));
     const UniformPair direction = random.pair(dim::bsdf_u);
@@ -232,7 +241,8 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
     // A black surface (the light's back, an albedo-0 emitter) ends the path: nothing it could
     // gather would count.
     if (!(next.throughput.x > 0.0f || next.throughput.y > 0.0f || next.throughput.z > 0.0f)) return std::nullopt;
-    next.count_emission = E::mis || s.specular;
+    next.first_hit_diffuse = scene.light_traces_caustics && (bounce == 0 ? !s.specular : first_hit_diffuse);
+    next.count_emission = (E::mis || s.specular) && !(next.first_hit_diffuse && s.specular);
     next.bsdf_pdf = 0.0f;
     if constexpr (E::mis)
         if (!s.specular) next.bsdf_pdf = diffuse_direction_pdf(surface, d, s.direction);

@@ -6,6 +6,21 @@
 
 namespace wt {
 
+bool light_traces_caustics(const SceneDescription& d) {
+    if (d.settings.estimator.caustics != CausticPaths::light_tracing) return false;
+    const auto has = [&](bool (Material::*property)() const) {
+        const auto used = [&](uint32_t material) { return (d.materials[material].*property)(); };
+        return std::any_of(d.meshes.begin(), d.meshes.end(),
+                           [&](const TriangleMesh& m) { return !m.triangles.empty() && used(m.material); }) ||
+               std::any_of(d.spheres.begin(), d.spheres.end(), [&](const Sphere& s) { return used(s.material); });
+    };
+    // Lights are triangles only: an emissive sphere is not sampled as a light.
+    const bool has_triangle_light = std::any_of(d.meshes.begin(), d.meshes.end(), [&](const TriangleMesh& m) {
+        return !m.triangles.empty() && d.materials[m.material].is_emissive();
+    });
+    return has_triangle_light && has(&Material::is_specular);
+}
+
 Scene build_scene(const SceneDescription& description) {
     Scene scene;
     scene.settings = description.settings;
@@ -42,6 +57,8 @@ Scene build_scene(const SceneDescription& description) {
         scene.spheres.push_back(sphere.center, sphere.radius, sphere.material);
     }
     scene.lights = LightTable(scene.triangles, scene.materials);
+    // The loader refuses degenerate lights, so a description with an emitter has a light table.
+    scene.light_traces_caustics = light_traces_caustics(description) && !scene.lights.empty();
     return scene;
 }
 

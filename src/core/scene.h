@@ -26,6 +26,9 @@ struct Scene {
     ShadingNormalTable shading_normals;  // empty unless some mesh has vertex normals
     SphereSoA spheres;
     LightTable lights;
+    // Light paths estimate the caustics seen directly (path_vertex.h, light_paths_count_emission):
+    // asked for by the settings, and the scene has lights and a mirror or glass surface.
+    bool light_traces_caustics = false;
 
     uint32_t primitive_count() const { return uint32_t(triangles.size() + spheres.size()); }
 };
@@ -34,6 +37,11 @@ struct Scene {
 // its vertex count, std::invalid_argument): descriptions come from the loader (which
 // validates) or from code. A mesh with vertex normals is never stored as a parallelogram.
 Scene build_scene(const SceneDescription& description);
+
+// Scene::light_traces_caustics, from the description alone (for the film's channels before the
+// scene is built): the settings ask for light tracing, some triangle emits and some surface is a
+// mirror or glass.
+bool light_traces_caustics(const SceneDescription& description);
 
 // What the shade stage needs to know about a hit.
 struct SurfacePoint {

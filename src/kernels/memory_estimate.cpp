@@ -9,6 +9,7 @@
 
 #include "kernels/accel/bvh_view.h"
 #include "kernels/accel/sah_builder.h"
+#include "kernels/caustics/light_tracing_pass.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/wavefront/ray_queues.h"
 #include "kernels/wavefront/wavefront_renderer.h"
@@ -53,12 +54,13 @@ double geometry_bytes(const Scene& scene) {
 MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& options) {
     MemoryEstimate e;
     const RenderSettings& s = scene.settings;
-    e.film = Film::bytes_needed(s.width, s.height, aov_film_channels(options.aovs).size());
+    e.film = Film::bytes_needed(s.width, s.height, render_film_channels(scene, options.aovs).size());
     e.workers = options.threads > 0 ? options.threads : default_thread_count();
     if (options.integrator == Integrator::wavefront)
         e.queues_per_worker = double(WavefrontWorkspace::bytes_needed(
             workspace_paths(s.width, s.height, s.spp, options.tile_size, options.batch_paths), std::size_t(s.shadow_rays),
             options.aovs.needs_path_data()));
+    if (scene.light_traces_caustics) e.queues_per_worker += double(LightTracingPass::bytes_per_worker());
     const int lanes = intersect_kernels(options.isa.value_or(best_supported_isa()), s.accuracy).width;
     if (resolve_accel(options.accel, scene.primitive_count(), lanes) == Accel::bvh) e.bvh = bvh_bytes(scene, options);
     e.geometry = geometry_bytes(scene);

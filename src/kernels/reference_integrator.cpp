@@ -24,6 +24,7 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
     glm::vec3 throughput(1.0f);
     bool count_emission = true;  // camera rays, specular bounces (no light sample covered them), any with mis
     float bsdf_pdf = 0.0f;       // mis: see emission_added
+    bool first_hit_diffuse = false;  // light tracing only: PathContinuation::first_hit_diffuse
 
     for (uint32_t bounce = 0;; ++bounce) {
         const Hit hit = closest(ray);
@@ -53,12 +54,13 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
         }
         if (record) record->push_back(vertex);
 
-        const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce);
+        const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce, first_hit_diffuse);
         if (!next) break;
         ++counts.bounce_rays;
         ray = next->ray;
         throughput = next->throughput;
         count_emission = next->count_emission;
+        first_hit_diffuse = next->first_hit_diffuse;
         bsdf_pdf = next->bsdf_pdf;
     }
     return radiance;

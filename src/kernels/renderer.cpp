@@ -5,12 +5,17 @@
 #include <stdexcept>
 #include <thread>
 
+#include "kernels/caustics/light_tracing_pass.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/memory_estimate.h"
 #include "kernels/reference_integrator.h"
 #include "kernels/wavefront/wavefront_renderer.h"
 
 namespace wt {
+
+std::vector<std::string> render_film_channels(const Scene& scene, const AovSelection& aovs) {
+    return film_channels_for(aovs, scene.light_traces_caustics);
+}
 
 int default_thread_count() { return std::max(1u, std::thread::hardware_concurrency()); }
 
@@ -40,6 +45,8 @@ RenderSession::RenderSession(const Scene& scene, const RenderOptions& options)
         bvh_ = build_bvh(scene, options.bvh, &pool_);
         bvh_tree_ = bvh_view(bvh_);
     }
+    if (scene.light_traces_caustics)
+        light_tracing_ = std::make_unique<LightTracingPass>(scene, accel_ == Accel::bvh ? &bvh_tree_ : nullptr, threads_);
 }
 
 RenderSession::~RenderSession() = default;
@@ -47,8 +54,9 @@ RenderSession::~RenderSession() = default;
 void RenderSession::render_samples(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done) {
     if (film.width() != scene_.settings.width || film.height() != scene_.settings.height)
         throw std::invalid_argument("render: film resolution does not match the scene's");
-    if (film.extra_channels() != aov_film_channels(options_.aovs))
-        throw std::invalid_argument("render: the film's extra channels are not those of the AOVs requested");
+    if (film.extra_channels() != render_film_channels(scene_, options_.aovs))
+        throw std::invalid_argument("render: the film's extra channels are not those of the AOVs requested "
+                                    "(and, with light tracing, the splats)");
     if (range.end <= range.begin) return;
     const BvhView* tree = accel_ == Accel::bvh ? &bvh_tree_ : nullptr;
     const IntersectContext context{scene_view(scene_), kernels_, tree};
@@ -72,6 +80,7 @@ void RenderSession::render_samples(Film& film, SampleRange range, const std::fun
         }
         if (tile_done) tile_done(uint64_t(tile.pixel_count()) * range.size());
     });
+    if (light_tracing_) light_tracing_->render(film, range.begin, range.end, pool_, counts_);
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -55,6 +55,11 @@ struct SampleRange {
 };
 
 struct WavefrontWorkspace;
+class LightTracingPass;
+
+// The film channels a render of `scene` with `aovs` needs: the AOVs' (aov_film_channels), then the
+// splat channels when the scene light-traces its caustics (Film::splat_channels).
+std::vector<std::string> render_film_channels(const Scene& scene, const AovSelection& aovs);
 
 class RenderSession {
 public:
@@ -65,7 +70,7 @@ public:
     RenderSession& operator=(const RenderSession&) = delete;
 
     // Adds samples `range` of every pixel to the film (which must match the scene's resolution
-    // and have the AOV channels of the options). Each pixel receives them in ascending order;
+    // and have render_film_channels(scene, options.aovs)), and their light paths' splats. Each pixel receives them in ascending order;
     // since the film's sums are exact, the film ends the same bits however a render is cut into
     // ranges, for any thread count, tile size and batch size. `tile_done(samples)`, if given, is called by the worker
     // that finished a tile with the number of samples it added: from several threads at once.
@@ -89,6 +94,7 @@ private:
     std::vector<RayCounts> counts_;
     // Created by the worker that uses it, on first use, so its pages live near that core.
     std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces_;
+    std::unique_ptr<LightTracingPass> light_tracing_;  // only when the scene light-traces caustics
     double seconds_ = 0.0;
 };
 

@@ -66,6 +66,12 @@ std::vector<std::string> aov_film_channels(const AovSelection& aovs) {
     return channels;
 }
 
+std::vector<std::string> film_channels_for(const AovSelection& aovs, bool with_splats) {
+    std::vector<std::string> channels = aov_film_channels(aovs);
+    if (with_splats) channels.insert(channels.end(), std::begin(Film::splat_channels), std::end(Film::splat_channels));
+    return channels;
+}
+
 void aov_sample_values(const AovSelection& aovs, const FirstSurface& surface, float* out) {
     if (aovs.albedo) *out++ = surface.albedo.x, *out++ = surface.albedo.y, *out++ = surface.albedo.z;
     if (aovs.normal) *out++ = surface.normal.x, *out++ = surface.normal.y, *out++ = surface.normal.z;

@@ -35,6 +35,9 @@ AovSelection aovs_held_by(const Film& film);
 // The film's extra channels for `aovs`, in the order aov_sample_values writes them.
 std::vector<std::string> aov_film_channels(const AovSelection& aovs);
 
+// The whole film's extra channels: the AOVs', then Film::splat_channels if the render splats.
+std::vector<std::string> film_channels_for(const AovSelection& aovs, bool with_splats);
+
 // One sample's extra-channel values (aov_film_channels(aovs).size() floats) into `out`.
 void aov_sample_values(const AovSelection& aovs, const FirstSurface& surface, float* out);
 

@@ -184,6 +184,17 @@ FixedPoint get_sum(const unsigned char* p, std::size_t bytes) {
 
 }  // namespace
 
+namespace {
+// A film of these channels, or the reason the file's channel list cannot be one as a CheckpointError.
+Film film_with_channels(const std::string& name, int width, int height, const std::vector<std::string>& extra) {
+    try {
+        return Film(width, height, extra);
+    } catch (const std::invalid_argument& e) {
+        fail(name, e.what());
+    }
+}
+}  // namespace
+
 Checkpoint parse_checkpoint(std::string_view bytes, const std::string& name, bool verify_checksum) {
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     const uint64_t size = bytes.size();
@@ -221,9 +232,11 @@ Checkpoint parse_checkpoint(std::string_view bytes, const std::string& name, boo
     // Sizes are now known to match the bytes there, so the film is at most twice the file.
     std::vector<std::string> extra;
     for (std::size_t c = 6; c < p.channels.size(); ++c) extra.push_back(p.channels[c].name);
-    Checkpoint checkpoint{p.header, Film(p.width, p.height, extra)};
+    Checkpoint checkpoint{p.header, film_with_channels(name, p.width, p.height, extra)};
     Film& film = checkpoint.film;
     const uint32_t range = p.header.next_sample - p.header.first_sample;
+    // Every sample of the range traced its light paths, whatever the pixels' counts.
+    if (film.has_splats()) film.set_splat_samples(range);
     const unsigned char* record = data + fmt::preamble_bytes + header_length;
     std::vector<uint32_t>& counts = film.raw_counts();
     FixedPoint* sums = film.raw_sums().data();

@@ -27,6 +27,8 @@ std::vector<NamedSetting> image_settings(const RenderSettings& s) {
         {"sampler", name_of(s.estimator.sampler)},
         {"light_sampling", name_of(s.estimator.light_sampling)},
         {"clamp_indirect", exact(s.estimator.clamp_indirect)},
+        {"caustics", name_of(s.estimator.caustics)},
+        {"light_paths_per_pixel", exact(s.estimator.light_paths_per_pixel)},
     };
 }
 

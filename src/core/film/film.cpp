@@ -8,16 +8,40 @@
 
 namespace wt {
 
+namespace {
+bool ends_in_splat_channels(const std::vector<std::string>& names) {
+    const std::size_t n = names.size();
+    return n >= 3 && names[n - 3] == Film::splat_channels[0] && names[n - 2] == Film::splat_channels[1] &&
+           names[n - 1] == Film::splat_channels[2];
+}
+}  // namespace
+
 Film::Film(int width, int height, std::vector<std::string> extra_channels)
     : width_(width), height_(height), extra_channels_(std::move(extra_channels)), stride_(6 + extra_channels_.size()),
+      splats_(ends_in_splat_channels(extra_channels_)), sample_extras_(extra_channels_.size() - (splats_ ? 3 : 0)),
       sums_(stride_ * std::size_t(width) * std::size_t(height), FixedPoint(0)),
       count_(std::size_t(width) * std::size_t(height), 0) {
     if (extra_channels_.size() > max_extra_channels) throw std::invalid_argument("film: too many extra channels");
+    for (std::size_t c = 0; c < sample_extras_; ++c)
+        if (extra_channels_[c].rfind("splat.", 0) == 0)
+            throw std::invalid_argument("film: splat channels must be the last three, in R, G, B order");
+}
+
+bool Film::add_splat(uint32_t pixel, const glm::vec3& value) {
+    FixedPoint* sums = &sums_[std::size_t(pixel) * stride_ + stride_ - 3];
+    FixedPoint updated[3];
+    for (int c = 0; c < 3; ++c) {
+        FixedPoint v;
+        updated[c] = sums[c];
+        if (!to_fixed_point(double(value[c]), v) || !add_fixed_point(updated[c], v)) return false;
+    }
+    for (int c = 0; c < 3; ++c) sums[c] = updated[c];
+    return true;
 }
 
 bool Film::add_extra(FixedPoint* sums, const float* extra) {
     // Checked before anything is stored, so a refused sample leaves no trace in any channel.
-    const std::size_t n = extra_channels_.size();
+    const std::size_t n = sample_extras_;
     FixedPoint updated[max_extra_channels];
     std::copy(sums, sums + n, updated);
     for (std::size_t c = 0; c < n; ++c) {
@@ -33,8 +57,15 @@ glm::dvec3 Film::pixel_sum(uint32_t pixel) const {
     return {from_fixed_point(s[0]), from_fixed_point(s[1]), from_fixed_point(s[2])};
 }
 
+glm::dvec3 Film::pixel_splat_mean(uint32_t pixel) const {
+    if (!splats_ || splat_samples_ == 0) return glm::dvec3(0.0);
+    const FixedPoint* s = &sums_[std::size_t(pixel) * stride_ + stride_ - 3];
+    return glm::dvec3(from_fixed_point(s[0]), from_fixed_point(s[1]), from_fixed_point(s[2])) / double(splat_samples_);
+}
+
 glm::dvec3 Film::pixel_mean(uint32_t pixel) const {
-    return count_[pixel] ? pixel_sum(pixel) / double(count_[pixel]) : glm::dvec3(0.0);
+    const glm::dvec3 own = count_[pixel] ? pixel_sum(pixel) / double(count_[pixel]) : glm::dvec3(0.0);
+    return splats_ ? own + pixel_splat_mean(pixel) : own;
 }
 
 glm::dvec3 Film::pixel_sample_variance(uint32_t pixel) const {
@@ -55,7 +86,7 @@ double Film::extra_mean(uint32_t pixel, std::size_t channel) const {
 std::vector<float> Film::resolve() const {
     std::vector<float> rgb(3 * count_.size(), 0.0f);
     for (std::size_t p = 0; p < count_.size(); ++p) {
-        if (count_[p] == 0) continue;
+        if (count_[p] == 0 && !splats_) continue;
         const glm::dvec3 mean = pixel_mean(uint32_t(p));
         for (int c = 0; c < 3; ++c) rgb[3 * p + c] = float(mean[c]);
     }
@@ -75,11 +106,12 @@ void Film::add_film(const Film& other) {
     }
     for (std::size_t i = 0; i < sums_.size(); ++i) sums_[i] += other.sums_[i];
     for (std::size_t p = 0; p < count_.size(); ++p) count_[p] += other.count_[p];
+    splat_samples_ += other.splat_samples_;
 }
 
 bool Film::operator==(const Film& other) const {
     return width_ == other.width_ && height_ == other.height_ && extra_channels_ == other.extra_channels_ &&
-           sums_ == other.sums_ && count_ == other.count_;
+           splat_samples_ == other.splat_samples_ && sums_ == other.sums_ && count_ == other.count_;
 }
 
 }  // namespace wt

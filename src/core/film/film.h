@@ -6,6 +6,13 @@
 // disjoint sample ranges add (`add_film`) to exactly the film of both ranges.
 //
 // Each pixel belongs to exactly one tile and each tile to one worker, so adds need no atomics.
+//
+// Splats: a film whose last three extra channels are `splat_channels` also sums contributions
+// that are not samples of the pixel they land in: light paths connected to the camera (light
+// tracing, kernels/caustics). Their estimate is normalised by the number of samples whose light
+// paths were traced (`splat_samples`, the same for every pixel), not by the pixel's own count,
+// and a pixel's mean is its samples' mean plus that. Those sums are exact too, so splats added
+// from many threads in any order give the same bits.
 
 #include <cmath>
 #include <cstdint>
@@ -22,9 +29,10 @@ namespace wt {
 class Film {
 public:
     static constexpr std::size_t max_extra_channels = 16;
+    static constexpr const char* splat_channels[3] = {"splat.R", "splat.G", "splat.B"};
 
     // `extra_channels`: names of per-sample values averaged like the radiance (AOVs), added
-    // with each sample in that order.
+    // with each sample in that order; ending in `splat_channels`, the film also takes splats.
     Film(int width, int height, std::vector<std::string> extra_channels = {});
 
     int width() const { return width_; }
@@ -44,22 +52,38 @@ public:
             updated[c] = sums[c];
             if (!to_fixed_point(values[c], v) || !add_fixed_point(updated[c], v)) return false;
         }
-        if (stride_ > 6 && !add_extra(sums + 6, extra)) return false;
+        if (sample_extras_ > 0 && !add_extra(sums + 6, extra)) return false;
         for (int c = 0; c < 6; ++c) sums[c] = updated[c];
         ++count_[pixel];
         return true;
     }
 
+    // Adds a splat (films with splat channels only). False, and nothing added, for a value that
+    // is not finite or would overflow the pixel's sum: the caller counts it, as a dropped sample.
+    bool add_splat(uint32_t pixel, const glm::vec3& value);
+    // The samples whose light paths have been splatted: what the splat sums are divided by.
+    void add_splat_samples(uint64_t samples) { splat_samples_ += samples; }
+    void set_splat_samples(uint64_t samples) { splat_samples_ = samples; }
+    uint64_t splat_samples() const { return splat_samples_; }
+    bool has_splats() const { return splats_; }
+
+    // The sum of the pixel's own samples (splats not included).
     glm::dvec3 pixel_sum(uint32_t pixel) const;
+    // The pixel's estimate: its samples' mean, plus its splats' sum over splat_samples().
     glm::dvec3 pixel_mean(uint32_t pixel) const;
+    // The splats' part of pixel_mean alone (zero without splat channels).
+    glm::dvec3 pixel_splat_mean(uint32_t pixel) const;
     // Unbiased sample variance of one sample's radiance (divide by the count for the variance
-    // of the pixel's mean). Zero with fewer than two samples.
+    // of the pixel's mean). Zero with fewer than two samples. The pixel's own samples only:
+    // splats have no per-pixel sample of their own to take a variance of.
     glm::dvec3 pixel_sample_variance(uint32_t pixel) const;
     uint32_t pixel_count(uint32_t pixel) const { return count_[pixel]; }
     // Mean radiance per pixel, RGB interleaved, rows top to bottom. A pixel with no valid sample is black.
     std::vector<float> resolve() const;
 
+    // Every extra channel, splats included: the film's layout, as checkpoints store it.
     const std::vector<std::string>& extra_channels() const { return extra_channels_; }
+    // The per-sample extra channels (AOVs) come first; `channel` indexes them.
     double extra_mean(uint32_t pixel, std::size_t channel) const;
 
     // Adds another film of the same size and channels (the samples of a disjoint range):
@@ -89,6 +113,9 @@ private:
     int width_, height_;
     std::vector<std::string> extra_channels_;
     std::size_t stride_;
+    bool splats_;                // the last three extra channels are splat_channels
+    std::size_t sample_extras_;  // extra channels added with each sample (the AOVs)
+    uint64_t splat_samples_ = 0;
     std::vector<FixedPoint> sums_;
     std::vector<uint32_t> count_;
 };

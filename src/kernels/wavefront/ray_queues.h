@@ -39,7 +39,10 @@ struct RayQueue {
     AlignedVector<float> ox, oy, oz, dx, dy, dz;
     AlignedVector<float> throughput_r, throughput_g, throughput_b;
     AlignedVector<uint32_t> path;          // slot in the PathTable
-    AlignedVector<uint8_t> count_emission; // camera ray, after a specular bounce, or any with mis
+    // Bit flags: kCountEmission (PathContinuation::count_emission; camera rays too) and
+    // kFirstHitDiffuse (PathContinuation::first_hit_diffuse).
+    AlignedVector<uint8_t> count_emission;
+    static constexpr uint8_t kCountEmission = 1, kFirstHitDiffuse = 2;
     AlignedVector<float> bsdf_pdf;         // mis only: PathContinuation::bsdf_pdf
     std::size_t count = 0;
 
@@ -47,7 +50,7 @@ struct RayQueue {
         for (auto* a : {&ox, &oy, &oz, &dx, &dy, &dz, &throughput_r, &throughput_g, &throughput_b, &bsdf_pdf}) a->resize(n);
         path.resize(n), count_emission.resize(n);
     }
-    void push(const Ray& r, const glm::vec3& throughput, uint32_t slot, bool emission) {
+    void push(const Ray& r, const glm::vec3& throughput, uint32_t slot, uint8_t emission) {
         const std::size_t i = count++;
         ox[i] = r.origin.x, oy[i] = r.origin.y, oz[i] = r.origin.z;
         dx[i] = r.direction.x, dy[i] = r.direction.y, dz[i] = r.direction.z;
@@ -59,7 +62,8 @@ struct RayQueue {
     template <bool kWithPdf>
     void push(const PathContinuation& next, uint32_t slot) {
         if constexpr (kWithPdf) bsdf_pdf[count] = next.bsdf_pdf;
-        push(next.ray, next.throughput, slot, next.count_emission);
+        push(next.ray, next.throughput, slot,
+             uint8_t((next.count_emission ? kCountEmission : 0) | (next.first_hit_diffuse ? kFirstHitDiffuse : 0)));
     }
     Ray ray(std::size_t i) const { return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}; }
     glm::vec3 throughput(std::size_t i) const { return {throughput_r[i], throughput_g[i], throughput_b[i]}; }

@@ -34,7 +34,8 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
             FirstSurface& first = paths.first_surface[slot];
             if (!first.found) record_first_surface(first, scene.camera, bounce, ray, hit, surface, m, throughput);
         }
-        if (rays.count_emission[i])
+        const uint8_t flags = rays.count_emission[i];
+        if (flags & RayQueue::kCountEmission)
             paths.add_radiance(slot, emission_added<E>(scene, m, surface, ray, hit.t, throughput,
                                                        E::mis ? rays.bsdf_pdf[i] : 0.0f, bounce));
         if (has_lights && gathers_direct_light(m)) {
@@ -42,7 +43,8 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
                                                ray.direction, throughput, path, bounce, shadow_ray_count);
             lights.sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
         }
-        const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce);
+        const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce,
+                                           flags & RayQueue::kFirstHitDiffuse);
         if (next) next_rays.push<E::mis>(*next, slot);
     }
 }

@@ -23,7 +23,8 @@ void generate_queue(const Scene& scene, const Tile& tile, uint32_t sample_begin,
                 paths.key[slot] = path.key;
                 paths.radiance_r[slot] = paths.radiance_g[slot] = paths.radiance_b[slot] = 0.0f;
                 // Emission seen from the camera counts in full (no light sample competes: bsdf_pdf 0).
-                rays.push<E::mis>(PathContinuation{camera_ray<E>(scene, pixel, path), glm::vec3(1.0f), true, 0.0f}, slot);
+                rays.push<E::mis>(PathContinuation{camera_ray<E>(scene, pixel, path), glm::vec3(1.0f), true, false, 0.0f},
+                                  slot);
             }
         }
     }

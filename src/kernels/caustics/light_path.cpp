@@ -1,0 +1,154 @@
+#include "kernels/caustics/light_path.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "core/float_minmax.h"
+#include "core/materials/bsdf.h"
+#include "core/materials/shading_normal_bsdf.h"
+#include "core/path_vertex.h"
+#include "core/ray_offset.h"
+#include "core/sampling/rng.h"
+#include "core/sampling/sampling.h"
+#include "kernels/accel/bvh_single_ray.h"
+#include "kernels/scene_intersect.h"
+
+namespace wt {
+
+namespace {
+
+constexpr uint64_t kLightPathSalt = 0x11647a7c5ULL;  // keeps light paths' keys apart from the camera paths'
+
+// The random dimensions of a light path: at its start (bounce 0) the point, the direction and
+// the emitter; at each surface vertex k (bounce k) the direction, the glass's reflect-or-refract
+// choice and Russian roulette.
+namespace light_dim {
+constexpr uint32_t point_u = 0;      // with point_v
+constexpr uint32_t direction_u = 2;  // with direction_v
+constexpr uint32_t emitter = 4;
+constexpr uint32_t specular_choice = 4;
+constexpr uint32_t roulette = 5;
+}  // namespace light_dim
+
+// Veach's correction for shading normals on paths traced from the lights (thesis, sec. 5.3.2;
+// pbrt-v4's CorrectShadingNormal): the adjoint of scattering about a shading normal ns is not the
+// scattering itself. `toward_previous` points back along the arriving path, `next` along the
+// sampled direction; 1 on flat surfaces, where ns is the geometric normal.
+float shading_normal_adjoint(const SurfacePoint& s, const glm::vec3& toward_previous, const glm::vec3& next) {
+    const float denominator = std::abs(glm::dot(toward_previous, s.normal)) * std::abs(glm::dot(next, s.shading_normal));
+    if (!(denominator > 0.0f)) return 0.0f;
+    return std::abs(glm::dot(toward_previous, s.shading_normal)) * std::abs(glm::dot(next, s.normal)) / denominator;
+}
+
+}  // namespace
+
+uint64_t light_path_key(uint64_t seed, uint64_t index, uint32_t sample) {
+    return mix64(mix64(mix64(seed ^ kLightPathSalt) + index * kGoldenGamma) + uint64_t(sample) * kGoldenGamma);
+}
+
+uint64_t light_paths_per_sample(const RenderSettings& s) {
+    const double paths = double(s.estimator.light_paths_per_pixel) * double(s.width) * double(s.height);
+    return std::max<uint64_t>(1, uint64_t(std::llround(paths)));
+}
+
+LightPathTracer::LightPathTracer(const Scene& scene, const BvhView* bvh)
+    : scene_(scene), bvh_(bvh), inverse_path_count_(float(1.0 / double(light_paths_per_sample(scene.settings)))) {}
+
+Hit LightPathTracer::closest(const Ray& ray) const {
+    return bvh_ ? bvh_intersect_closest(*bvh_, scene_.settings.accuracy, ray) : intersect_closest(scene_, ray);
+}
+
+bool LightPathTracer::blocked(const Ray& ray, float tmax) const {
+    return bvh_ ? bvh_intersect_any(*bvh_, scene_.settings.accuracy, ray, tmax) : intersect_any(scene_, ray, tmax);
+}
+
+void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats) const {
+    const RenderSettings& settings = scene_.settings;
+    const uint64_t key = light_path_key(settings.seed, index, sample);
+    const VertexRandom start(key, 0);
+    const UniformPair point = start.pair(light_dim::point_u);
+    const UniformPair direction = start.pair(light_dim::direction_u);
+    const LightSample light = scene_.lights.sample(scene_.triangles, start(light_dim::emitter), point.first, point.second);
+    Ray ray;
+    ray.direction = glm::normalize(Frame(light.normal).to_world(sample_cosine_hemisphere(direction.first, direction.second)));
+    if (!(glm::dot(ray.direction, light.normal) > 0.0f)) return;  // lost to rounding at the horizon
+    ray.origin = offset_ray_origin(light.position, light.error, light.normal);
+    // Le cos / (pdf_area * cos / pi): the emitted power the path carries, per unit of its pdf.
+    const glm::vec3 power = light.radiance * (kPi / light.pdf_area);
+    glm::vec3 chain(1.0f);  // the bounces' weights so far
+
+    // `vertex` counts the surfaces the path has hit, the one this ray finds included: a camera
+    // path that ends in this light path meets the light after as many vertices of its own.
+    for (uint32_t vertex = 1;; ++vertex) {
+        ++counts.light_rays;
+        const Hit hit = closest(ray);
+        if (!hit.found()) return;
+        const SurfacePoint surface = surface_at(scene_, ray, hit);
+        const Material& m = scene_.materials[surface.material];
+        if (!m.is_specular()) {
+            // A diffuse first bounce is direct light: the camera paths' light samples estimate it.
+            if (vertex == 1) return;
+            if (const auto splat = connect_to_camera(surface, m, ray.direction, power * chain, counts))
+                splats.push_back(*splat);
+        }
+        // Camera paths shade no vertex from max_bounces on, so none could meet the light after more.
+        if (int(vertex) + 1 >= settings.max_bounces) return;
+        const VertexRandom random(key, vertex);
+        const UniformPair u = random.pair(light_dim::direction_u);
+        const float u_choice = random(light_dim::specular_choice);
+        const BsdfSample s = surface.smooth ? sample_bsdf_about_shading_normal(m, surface.normal, surface.shading_normal,
+                                                                               ray.direction, u.first, u.second, u_choice,
+                                                                               settings.accuracy.fresnel)
+                                            : sample_bsdf(m, surface.normal, ray.direction, u.first, u.second, u_choice,
+                                                          settings.accuracy.fresnel);
+        if (!s.valid) return;
+        chain *= s.weight;
+        if (surface.smooth) chain *= shading_normal_adjoint(surface, -ray.direction, s.direction);
+        if (int(vertex) > settings.rr_start_bounce) {
+            // As the camera paths' roulette: survival by the weight's largest channel, capped.
+            const float q = fmin_float(0.95f, fmax_float(chain.x, fmax_float(chain.y, chain.z)));
+            if (!(random(light_dim::roulette) < q)) return;
+            chain /= q;
+        }
+        if (!(chain.x > 0.0f || chain.y > 0.0f || chain.z > 0.0f)) return;
+        const glm::vec3 side = glm::dot(s.direction, surface.normal) > 0.0f ? surface.normal : -surface.normal;
+        ray = {offset_ray_origin(surface.position, surface.error, side), s.direction};
+    }
+}
+
+// The t = 1 connection: what the camera sees of the light arriving at `surface` along `arriving`
+// with `power`. Per unit area of the surface the pixel receives radiance * cos_o / dist^2 *
+// importance (Camera::film_point); light tracing's estimate of the radiance term is power * f,
+// with f about the shading normal as the camera paths' light samples see it (folded_diffuse,
+// divided by the geometric cosine the power already carries), which is also what the adjoint
+// correction makes of it (pbrt-v4's BDPT connection to the camera).
+std::optional<CameraSplat> LightPathTracer::connect_to_camera(const SurfacePoint& surface, const Material& m,
+                                                              const glm::vec3& arriving, const glm::vec3& power,
+                                                              RayCounts& counts) const {
+    if (!gathers_direct_light(m)) return std::nullopt;  // a black surface reflects nothing to see
+    const Camera& camera = scene_.camera;
+    const auto film = camera.film_point(surface.position);
+    if (!film) return std::nullopt;
+    const glm::vec3 to_eye = camera.eye() - surface.position;
+    const float dist2 = glm::dot(to_eye, to_eye);
+    if (!(dist2 > 0.0f)) return std::nullopt;
+    const glm::vec3 wo = to_eye / std::sqrt(dist2);
+    const LightSamplingPoint at = light_sampling_point(surface, -wo);  // normals facing the eye
+    const glm::vec3 wi = -arriving;
+    const float cos_i = glm::dot(at.normal, wi), cos_o = glm::dot(at.normal, wo);
+    if (!(cos_i > 0.0f && cos_o > 0.0f)) return std::nullopt;  // lit from behind, as the camera sees it
+    const DiffuseBsdfAtView bsdf(m, at.shading_normal, wo);
+    const glm::vec3 f = at.smooth ? folded_diffuse(bsdf, at.normal, at.shading_normal, wi, cos_i) / cos_i : bsdf(wi, cos_i);
+
+    ++counts.camera_connections;
+    const glm::vec3 span = camera.eye() - at.ray_origin;
+    const float tmax = glm::length(span);
+    if (blocked(Ray{at.ray_origin, span / tmax}, tmax)) return std::nullopt;
+    // film_point keeps x and y inside the image, so their floors are pixel coordinates.
+    const uint32_t pixel = uint32_t(film->y) * uint32_t(scene_.settings.width) + uint32_t(film->x);
+    return CameraSplat{pixel, power * f * (cos_o / dist2 * film->importance * inverse_path_count_)};
+}
+
+}  // namespace wt

@@ -1,0 +1,58 @@
+#pragma once
+// One light path of light tracing (particle tracing; Veach 1997, sec. 10.2, the bidirectional
+// strategy with one camera vertex): a point on a light, a cosine-weighted direction, and bounces
+// (BSDF-sampled, Russian roulette) from surface to surface, each diffuse vertex connected to the
+// camera. Only paths whose first bounce is a mirror or glass count: together they estimate
+// exactly the paths camera -> diffuse -> anything -> specular -> light that the camera paths leave
+// out when the scene light-traces its caustics (path_vertex.h, PathContinuation): the path space
+// is split in two and each part has one estimator, so no weights are needed and the sum is
+// unbiased. A caustic, and the light it throws on to other surfaces, is then found from the
+// light's side, where the small light is where every path starts, not a target hit by chance.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/scene.h"
+#include "kernels/accel/bvh_view.h"
+#include "kernels/render_stats.h"
+
+namespace wt {
+
+// A light path's contribution to one pixel's estimate, for Film::add_splat.
+struct CameraSplat {
+    uint32_t pixel;
+    glm::vec3 value;
+};
+
+// The random-number key of light path `index` of sample `sample`: any one path replays alone,
+// and the paths do not depend on how they are shared among threads.
+uint64_t light_path_key(uint64_t seed, uint64_t index, uint32_t sample);
+
+// How many light paths each sample traces: light_paths_per_pixel x width x height, at least one.
+uint64_t light_paths_per_sample(const RenderSettings& settings);
+
+class LightPathTracer {
+public:
+    // `bvh`: the scene's BVH, or null for the flat list (kernels/scene_intersect.h).
+    LightPathTracer(const Scene& scene, const BvhView* bvh);
+
+    // Light path `index` of sample `sample`: appends a splat to `splats` for each diffuse vertex
+    // the camera sees, if the path's first bounce was specular. The values are already divided by
+    // the number of paths per sample, so the film divides the splat sums by the samples alone.
+    void trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats) const;
+
+private:
+    std::optional<CameraSplat> connect_to_camera(const SurfacePoint& surface, const Material& m, const glm::vec3& arriving,
+                                                 const glm::vec3& power, RayCounts& counts) const;
+    Hit closest(const Ray& ray) const;
+    bool blocked(const Ray& ray, float tmax) const;
+
+    const Scene& scene_;
+    const BvhView* bvh_;
+    float inverse_path_count_;
+};
+
+}  // namespace wt
