@@ -213,6 +213,10 @@ TEST(LightTracing, ImageIsTheSameBitsForAnyThreadCountIntegratorAndSampleRanges)
     EXPECT_TRUE(one.film == test::render_film(d, Integrator::wavefront, 3).film);
     EXPECT_TRUE(one.film == test::render_film(d, Integrator::reference, 2).film);
     EXPECT_TRUE(one.film == test::render_film(d, Integrator::wavefront, 2, 5, 97).film);  // tiles and batches
+    // The wavefront light paths' SIMD kernels, through the BVH too, against the scalar code.
+    EXPECT_TRUE(one.film == test::render_film(d, Integrator::wavefront, 2, 16, 2048, Isa::scalar).film);
+    EXPECT_TRUE(one.film == test::render_film(d, Integrator::wavefront, 2, 16, 2048, {}, Accel::bvh).film);
+    EXPECT_TRUE(one.film == test::render_film(d, Integrator::reference, 2, 16, 2048, {}, Accel::bvh).film);
 
     const Scene scene = build_scene(d);
     RenderOptions options;

@@ -80,7 +80,9 @@ void RenderSession::render_samples(Film& film, SampleRange range, const std::fun
         }
         if (tile_done) tile_done(uint64_t(tile.pixel_count()) * range.size());
     });
-    if (light_tracing_) light_tracing_->render(film, range.begin, range.end, pool_, counts_);
+    if (light_tracing_)
+        light_tracing_->render(film, range.begin, range.end, pool_, counts_,
+                               options_.integrator == Integrator::wavefront ? &context : nullptr);
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

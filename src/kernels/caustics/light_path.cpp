@@ -64,57 +64,73 @@ bool LightPathTracer::blocked(const Ray& ray, float tmax) const {
     return bvh_ ? bvh_intersect_any(*bvh_, scene_.settings.accuracy, ray, tmax) : intersect_any(scene_, ray, tmax);
 }
 
-void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats) const {
-    const RenderSettings& settings = scene_.settings;
-    const uint64_t key = light_path_key(settings.seed, index, sample);
-    const VertexRandom start(key, 0);
-    const UniformPair point = start.pair(light_dim::point_u);
-    const UniformPair direction = start.pair(light_dim::direction_u);
-    const LightSample light = scene_.lights.sample(scene_.triangles, start(light_dim::emitter), point.first, point.second);
-    Ray ray;
-    ray.direction = glm::normalize(Frame(light.normal).to_world(sample_cosine_hemisphere(direction.first, direction.second)));
-    if (!(glm::dot(ray.direction, light.normal) > 0.0f)) return;  // lost to rounding at the horizon
-    ray.origin = offset_ray_origin(light.position, light.error, light.normal);
+std::optional<LightRay> LightPathTracer::start(uint64_t key) const {
+    const VertexRandom random(key, 0);
+    const UniformPair point = random.pair(light_dim::point_u);
+    const UniformPair direction = random.pair(light_dim::direction_u);
+    const LightSample light = scene_.lights.sample(scene_.triangles, random(light_dim::emitter), point.first, point.second);
+    LightRay r;
+    r.ray.direction = glm::normalize(Frame(light.normal).to_world(sample_cosine_hemisphere(direction.first, direction.second)));
+    if (!(glm::dot(r.ray.direction, light.normal) > 0.0f)) return std::nullopt;  // lost to rounding at the horizon
+    r.ray.origin = offset_ray_origin(light.position, light.error, light.normal);
     // Le cos / (pdf_area * cos / pi): the emitted power the path carries, per unit of its pdf.
-    const glm::vec3 power = light.radiance * (kPi / light.pdf_area);
-    glm::vec3 chain(1.0f);  // the bounces' weights so far
+    r.power = light.radiance * (kPi / light.pdf_area);
+    r.weight = glm::vec3(1.0f);
+    return r;
+}
 
-    // `vertex` counts the surfaces the path has hit, the one this ray finds included: a camera
-    // path that ends in this light path meets the light after as many vertices of its own.
-    for (uint32_t vertex = 1;; ++vertex) {
+// `vertex` counts the surfaces the path has hit, this one included: a camera path that ends in
+// this light path meets the light after as many vertices of its own.
+LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit) const {
+    const RenderSettings& settings = scene_.settings;
+    const Ray& ray = at.ray;
+    const SurfacePoint surface = surface_at(scene_, ray, hit);
+    const Material& m = scene_.materials[surface.material];
+    LightVertex out;
+    if (!m.is_specular()) {
+        // A diffuse first bounce is direct light: the camera paths' light samples estimate it.
+        if (vertex == 1) return out;
+        out.connection = connect_to_camera(surface, m, ray.direction, at.power * at.weight);
+    }
+    // Camera paths shade no vertex from max_bounces on, so none could meet the light after more.
+    if (int(vertex) + 1 >= settings.max_bounces) return out;
+    const VertexRandom random(key, vertex);
+    const UniformPair u = random.pair(light_dim::direction_u);
+    const float u_choice = random(light_dim::specular_choice);
+    const BsdfSample s = surface.smooth ? sample_bsdf_about_shading_normal(m, surface.normal, surface.shading_normal,
+                                                                           ray.direction, u.first, u.second, u_choice,
+                                                                           settings.accuracy.fresnel)
+                                        : sample_bsdf(m, surface.normal, ray.direction, u.first, u.second, u_choice,
+                                                      settings.accuracy.fresnel);
+    if (!s.valid) return out;
+    glm::vec3 weight = at.weight * s.weight;
+    if (surface.smooth) weight *= shading_normal_adjoint(surface, -ray.direction, s.direction);
+    if (int(vertex) > settings.rr_start_bounce) {
+        // As the camera paths' roulette: survival by the weight's largest channel, capped.
+        const float q = fmin_float(0.95f, fmax_float(weight.x, fmax_float(weight.y, weight.z)));
+        if (!(random(light_dim::roulette) < q)) return out;
+        weight /= q;
+    }
+    if (!(weight.x > 0.0f || weight.y > 0.0f || weight.z > 0.0f)) return out;
+    const glm::vec3 side = glm::dot(s.direction, surface.normal) > 0.0f ? surface.normal : -surface.normal;
+    out.next = LightRay{{offset_ray_origin(surface.position, surface.error, side), s.direction}, at.power, weight};
+    return out;
+}
+
+void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats) const {
+    const uint64_t key = light_path_key(scene_.settings.seed, index, sample);
+    std::optional<LightRay> ray = start(key);
+    ++counts.light_paths;
+    for (uint32_t vertex = 1; ray; ++vertex) {
         ++counts.light_rays;
-        const Hit hit = closest(ray);
+        const Hit hit = closest(ray->ray);
         if (!hit.found()) return;
-        const SurfacePoint surface = surface_at(scene_, ray, hit);
-        const Material& m = scene_.materials[surface.material];
-        if (!m.is_specular()) {
-            // A diffuse first bounce is direct light: the camera paths' light samples estimate it.
-            if (vertex == 1) return;
-            if (const auto splat = connect_to_camera(surface, m, ray.direction, power * chain, counts))
-                splats.push_back(*splat);
+        const LightVertex v = at_vertex(key, vertex, *ray, hit);
+        if (v.connection) {
+            ++counts.camera_connections;
+            if (!blocked(v.connection->ray, v.connection->tmax)) splats.push_back(v.connection->splat);
         }
-        // Camera paths shade no vertex from max_bounces on, so none could meet the light after more.
-        if (int(vertex) + 1 >= settings.max_bounces) return;
-        const VertexRandom random(key, vertex);
-        const UniformPair u = random.pair(light_dim::direction_u);
-        const float u_choice = random(light_dim::specular_choice);
-        const BsdfSample s = surface.smooth ? sample_bsdf_about_shading_normal(m, surface.normal, surface.shading_normal,
-                                                                               ray.direction, u.first, u.second, u_choice,
-                                                                               settings.accuracy.fresnel)
-                                            : sample_bsdf(m, surface.normal, ray.direction, u.first, u.second, u_choice,
-                                                          settings.accuracy.fresnel);
-        if (!s.valid) return;
-        chain *= s.weight;
-        if (surface.smooth) chain *= shading_normal_adjoint(surface, -ray.direction, s.direction);
-        if (int(vertex) > settings.rr_start_bounce) {
-            // As the camera paths' roulette: survival by the weight's largest channel, capped.
-            const float q = fmin_float(0.95f, fmax_float(chain.x, fmax_float(chain.y, chain.z)));
-            if (!(random(light_dim::roulette) < q)) return;
-            chain /= q;
-        }
-        if (!(chain.x > 0.0f || chain.y > 0.0f || chain.z > 0.0f)) return;
-        const glm::vec3 side = glm::dot(s.direction, surface.normal) > 0.0f ? surface.normal : -surface.normal;
-        ray = {offset_ray_origin(surface.position, surface.error, side), s.direction};
+        ray = v.next;
     }
 }
 
@@ -124,9 +140,8 @@ void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, 
 // with f about the shading normal as the camera paths' light samples see it (folded_diffuse,
 // divided by the geometric cosine the power already carries), which is also what the adjoint
 // correction makes of it (pbrt-v4's BDPT connection to the camera).
-std::optional<CameraSplat> LightPathTracer::connect_to_camera(const SurfacePoint& surface, const Material& m,
-                                                              const glm::vec3& arriving, const glm::vec3& power,
-                                                              RayCounts& counts) const {
+std::optional<CameraConnection> LightPathTracer::connect_to_camera(const SurfacePoint& surface, const Material& m,
+                                                                   const glm::vec3& arriving, const glm::vec3& power) const {
     if (!gathers_direct_light(m)) return std::nullopt;  // a black surface reflects nothing to see
     const Camera& camera = scene_.camera;
     const auto film = camera.film_point(surface.position);
@@ -142,13 +157,12 @@ std::optional<CameraSplat> LightPathTracer::connect_to_camera(const SurfacePoint
     const DiffuseBsdfAtView bsdf(m, at.shading_normal, wo);
     const glm::vec3 f = at.smooth ? folded_diffuse(bsdf, at.normal, at.shading_normal, wi, cos_i) / cos_i : bsdf(wi, cos_i);
 
-    ++counts.camera_connections;
     const glm::vec3 span = camera.eye() - at.ray_origin;
     const float tmax = glm::length(span);
-    if (blocked(Ray{at.ray_origin, span / tmax}, tmax)) return std::nullopt;
     // film_point keeps x and y inside the image, so their floors are pixel coordinates.
     const uint32_t pixel = uint32_t(film->y) * uint32_t(scene_.settings.width) + uint32_t(film->x);
-    return CameraSplat{pixel, power * f * (cos_o / dist2 * film->importance * inverse_path_count_)};
+    return CameraConnection{{at.ray_origin, span / tmax}, tmax,
+                            {pixel, power * f * (cos_o / dist2 * film->importance * inverse_path_count_)}};
 }
 
 }  // namespace wt

@@ -34,19 +34,51 @@ uint64_t light_path_key(uint64_t seed, uint64_t index, uint32_t sample);
 // How many light paths each sample traces: light_paths_per_pixel x width x height, at least one.
 uint64_t light_paths_per_sample(const RenderSettings& settings);
 
+// A light path's ray: where it goes, the power the path started with, and the weight of its
+// bounces so far (kept apart from the power for Russian roulette, which looks at the weight).
+struct LightRay {
+    Ray ray;
+    glm::vec3 power;
+    glm::vec3 weight;
+};
+
+// A diffuse vertex's connection to the camera: the splat it adds if nothing blocks the ray.
+struct CameraConnection {
+    Ray ray;
+    float tmax;
+    CameraSplat splat;
+};
+
+// What a light path does at one vertex: the connection to the camera, if any, and the ray that
+// continues the path, if it goes on.
+struct LightVertex {
+    std::optional<CameraConnection> connection;
+    std::optional<LightRay> next;
+};
+
+// The vertex code of a light path, written once and scheduled two ways: one path at a time
+// (trace, for the reference integrator and --debug-sample) and as wavefront queues
+// (light_tracing_pass.cpp, on the SIMD kernels). Both call these in the same order and the
+// kernels return the scalar code's bits, so both give the same splats.
 class LightPathTracer {
 public:
-    // `bvh`: the scene's BVH, or null for the flat list (kernels/scene_intersect.h).
+    // `bvh`: the scene's BVH, or null for the flat list (kernels/scene_intersect.h); trace() alone reads it.
     LightPathTracer(const Scene& scene, const BvhView* bvh);
 
-    // Light path `index` of sample `sample`: appends a splat to `splats` for each diffuse vertex
-    // the camera sees, if the path's first bounce was specular. The values are already divided by
-    // the number of paths per sample, so the film divides the splat sums by the samples alone.
+    // The first ray of the path with random-number key `key` (light_path_key), if it leaves its light.
+    std::optional<LightRay> start(uint64_t key) const;
+    // What the path does at the surface `hit` of `at`, its `vertex`-th (1 for the first hit).
+    LightVertex at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit) const;
+
+    // Light path `index` of sample `sample`, one ray at a time: appends a splat to `splats` for
+    // each diffuse vertex the camera sees, if the path's first bounce was specular. The values are
+    // already divided by the number of paths per sample, so the film divides the splat sums by
+    // the samples alone.
     void trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats) const;
 
 private:
-    std::optional<CameraSplat> connect_to_camera(const SurfacePoint& surface, const Material& m, const glm::vec3& arriving,
-                                                 const glm::vec3& power, RayCounts& counts) const;
+    std::optional<CameraConnection> connect_to_camera(const SurfacePoint& surface, const Material& m,
+                                                      const glm::vec3& arriving, const glm::vec3& power) const;
     Hit closest(const Ray& ray) const;
     bool blocked(const Ray& ray, float tmax) const;
 

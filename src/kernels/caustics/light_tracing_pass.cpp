@@ -1,17 +1,43 @@
 #include "kernels/caustics/light_tracing_pass.h"
 
 #include <stdexcept>
+#include <utility>
+
+#include "core/aligned_vector.h"
+#include "kernels/isa/intersect_dispatch.h"
 
 namespace wt {
 
-namespace {
-// Light paths per work item: large enough that handing out items costs nothing, small enough
-// that two workers share a sample's paths evenly.
-constexpr uint64_t kPathsPerItem = 4096;
-}  // namespace
+// One worker's queues for the wavefront light paths: per path of an item its key and power, its
+// rays as a RayQueue (the throughput is the bounces' weight), and the camera connections as a
+// ShadowQueue whose `path` is the pixel the splat lands in.
+struct LightPathWorkspace {
+    AlignedVector<uint64_t> key;
+    AlignedVector<float> power_r, power_g, power_b;
+    RayQueue rays, next_rays;
+    HitQueue hits;
+    ShadowQueue connections;
+
+    explicit LightPathWorkspace(std::size_t paths) {
+        key.resize(paths), power_r.resize(paths), power_g.resize(paths), power_b.resize(paths);
+        rays.reserve(paths), next_rays.reserve(paths), hits.reserve(paths), connections.reserve(paths);
+    }
+    static constexpr std::size_t bytes_needed(std::size_t paths) { return paths * (8 + 12 + 2 * 45 + 16 + 45); }
+    LightRay light_ray(std::size_t i) const {
+        const uint32_t slot = rays.path[i];
+        return {rays.ray(i), {power_r[slot], power_g[slot], power_b[slot]}, rays.throughput(i)};
+    }
+};
+
+std::size_t LightTracingPass::bytes_per_worker() {
+    return kBufferedSplats * sizeof(CameraSplat) + LightPathWorkspace::bytes_needed(kPathsPerItem);
+}
 
 LightTracingPass::LightTracingPass(const Scene& scene, const BvhView* bvh, int threads)
-    : tracer_(scene, bvh), paths_per_sample_(light_paths_per_sample(scene.settings)), buffers_(std::size_t(threads)) {}
+    : scene_(scene), tracer_(scene, bvh), paths_per_sample_(light_paths_per_sample(scene.settings)),
+      buffers_(std::size_t(threads)), workspaces_(std::size_t(threads)) {}
+
+LightTracingPass::~LightTracingPass() = default;
 
 void LightTracingPass::flush(Film& film, std::vector<CameraSplat>& buffer, RayCounts& counts) {
     {
@@ -22,8 +48,51 @@ void LightTracingPass::flush(Film& film, std::vector<CameraSplat>& buffer, RayCo
     buffer.clear();
 }
 
+// The paths [first, end) of one sample, advanced together vertex by vertex: the same vertex code
+// in the same order per path as LightPathTracer::trace, so the same splats.
+void LightTracingPass::trace_item_wavefront(const IntersectContext& context, uint32_t sample, uint64_t first,
+                                            uint64_t end, LightPathWorkspace& ws, std::vector<CameraSplat>& splats,
+                                            RayCounts& counts) const {
+    ws.rays.count = 0;
+    for (uint64_t index = first; index < end; ++index) {
+        const uint32_t slot = uint32_t(index - first);
+        ws.key[slot] = light_path_key(scene_.settings.seed, index, sample);
+        if (const auto r = tracer_.start(ws.key[slot])) {
+            ws.power_r[slot] = r->power.x, ws.power_g[slot] = r->power.y, ws.power_b[slot] = r->power.z;
+            ws.rays.push(r->ray, r->weight, slot, 0);
+        }
+    }
+    counts.light_paths += end - first;
+    for (uint32_t vertex = 1; ws.rays.count > 0; ++vertex) {
+        counts.light_rays += ws.rays.count;
+        intersect_closest_stage(context, ws.rays, ws.hits, false);
+        ws.next_rays.count = 0;
+        ws.connections.count = 0;
+        for (std::size_t i = 0; i < ws.rays.count; ++i) {
+            const Hit hit = ws.hits.hit(i);
+            if (!hit.found()) continue;
+            const uint32_t slot = ws.rays.path[i];
+            const LightVertex v = tracer_.at_vertex(ws.key[slot], vertex, ws.light_ray(i), hit);
+            if (v.connection)
+                ws.connections.push(ShadowRay{v.connection->ray, v.connection->tmax, v.connection->splat.value},
+                                    v.connection->splat.pixel);
+            if (v.next) ws.next_rays.push(v.next->ray, v.next->weight, slot, 0);
+        }
+        counts.camera_connections += ws.connections.count;
+        if (ws.connections.count > 0) {
+            if (context.bvh)
+                context.kernels->any_bvh(*context.bvh, ray_view(ws.connections), ws.connections.occluded.data());
+            else
+                context.kernels->any_raypacket(context.scene, ray_view(ws.connections), ws.connections.occluded.data());
+            for (std::size_t i = 0; i < ws.connections.count; ++i)
+                if (!ws.connections.occluded[i]) splats.push_back({ws.connections.path[i], ws.connections.contribution(i)});
+        }
+        std::swap(ws.rays, ws.next_rays);
+    }
+}
+
 void LightTracingPass::render(Film& film, uint32_t sample_begin, uint32_t sample_end, ThreadPool& pool,
-                              std::vector<RayCounts>& counts) {
+                              std::vector<RayCounts>& counts, const IntersectContext* wavefront) {
     if (!film.has_splats()) throw std::invalid_argument("render: light tracing needs a film with splat channels");
     if (sample_end <= sample_begin) return;
     const uint64_t items_per_sample = (paths_per_sample_ + kPathsPerItem - 1) / kPathsPerItem;
@@ -34,11 +103,14 @@ void LightTracingPass::render(Film& film, uint32_t sample_begin, uint32_t sample
         const uint64_t end = std::min(paths_per_sample_, first + kPathsPerItem);
         RayCounts& c = counts[std::size_t(worker)];
         std::vector<CameraSplat>& buffer = buffers_[std::size_t(worker)];
-        for (uint64_t path = first; path < end; ++path) {
-            tracer_.trace(path, sample, c, buffer);
-            if (buffer.size() >= kBufferedSplats) flush(film, buffer, c);
+        if (wavefront) {
+            auto& ws = workspaces_[std::size_t(worker)];
+            if (!ws) ws = std::make_unique<LightPathWorkspace>(std::size_t(kPathsPerItem));
+            trace_item_wavefront(*wavefront, sample, first, end, *ws, buffer, c);
+        } else {
+            for (uint64_t path = first; path < end; ++path) tracer_.trace(path, sample, c, buffer);
         }
-        c.light_paths += end - first;
+        if (buffer.size() >= kBufferedSplats) flush(film, buffer, c);
     });
     for (std::size_t w = 0; w < buffers_.size(); ++w) flush(film, buffers_[w], counts[w]);
     film.add_splat_samples(sample_end - sample_begin);
