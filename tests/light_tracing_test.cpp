@@ -236,6 +236,34 @@ TEST(LightTracing, ImageIsTheSameBitsForAnyThreadCountIntegratorAndSampleRanges)
     EXPECT_TRUE(late == one.film);
 }
 
+// Every light path replayed alone (what --debug-light-path runs) adds exactly the splats the
+// render added: the splat sums of one sample, path by path, equal the rendered film's.
+TEST(LightTracing, LightPathsReplayedOneByOneGiveTheRendersSplats) {
+    const SceneDescription d = hexroom_light_traced(12, 10, 1, 4);
+    const Scene scene = build_scene(d);
+    const test::RenderedFilm rendered = test::render_film(d, Integrator::wavefront, 2);
+    Film replayed(d.settings.width, d.settings.height, render_film_channels(scene, AovSelection{}));
+    const LightPathTracer tracer(scene, nullptr);
+    RayCounts counts;
+    std::vector<LightPathVertexRecord> record;
+    std::size_t recorded_splats = 0;
+    for (uint64_t i = 0; i < light_paths_per_sample(d.settings); ++i) {
+        std::vector<CameraSplat> splats;
+        record.clear();
+        tracer.trace(i, 0, counts, splats, &record);
+        for (const CameraSplat& splat : splats) ASSERT_TRUE(replayed.add_splat(splat.pixel, splat.value));
+        std::size_t splatted = 0;
+        for (const LightPathVertexRecord& v : record) splatted += v.splat && !v.connection_blocked;
+        ASSERT_EQ(splatted, splats.size()) << "light path " << i << ": the record shows what was splatted";
+        recorded_splats += splatted;
+    }
+    ASSERT_GT(recorded_splats, 0u);
+    const std::size_t stride = rendered.film.channels_per_pixel();
+    for (std::size_t p = 0; p < rendered.film.pixel_total(); ++p)
+        for (std::size_t c = stride - 3; c < stride; ++c)
+            ASSERT_EQ(rendered.film.raw_sums()[p * stride + c], replayed.raw_sums()[p * stride + c]) << "pixel " << p;
+}
+
 TEST(LightTracing, CheckpointKeepsTheSplatsAndTheirSampleCount) {
     const SceneDescription d = hexroom_light_traced(10, 8, 3, 9);
     const test::RenderedFilm r = test::render_film(d, Integrator::wavefront, 2);

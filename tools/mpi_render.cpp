@@ -196,10 +196,14 @@ DistributedRenderResult dispatch_and_reduce(RenderSession& session, Film& film, 
         check(MPI_Recv(flat.data(), n, MPI_UINT32_T, rank, tag_ranges, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "receiving a film");
         RankRanges r{rank, {}};
         for (std::size_t i = 0; i + 1 < flat.size(); i += 2) r.ranges.push_back({flat[i], flat[i + 1]});
+        // The rank traced the light paths of every sample it rendered: what its splats are over.
+        uint64_t rank_samples = 0;
+        for (const SampleRange& range : r.ranges) rank_samples += range.size();
         ranges.push_back(std::move(r));
         Film part(film.width(), film.height(), film.extra_channels());
         receive_bytes(part.raw_counts().data(), part.raw_counts().size() * sizeof(uint32_t), rank, tag_counts);
         receive_bytes(part.raw_sums().data(), part.raw_sums().size() * sizeof(FixedPoint), rank, tag_sums);
+        if (part.has_splats()) part.set_splat_samples(rank_samples);
         RayCounts counts;
         receive_bytes(&counts, sizeof counts, rank, tag_rays);
         film.add_film(part);

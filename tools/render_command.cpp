@@ -18,6 +18,7 @@
 #include "core/scene_file/scene_loader.h"
 #include "core/scene_hash.h"
 #include "cli_values.h"
+#include "debug_light_path.h"
 #include "debug_sample.h"
 #include "interrupt.h"
 #include "kernels/isa/intersect_dispatch.h"
@@ -79,6 +80,9 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->transform(decimal_integer(1, uint64_t(1) << 24));
     cmd->add_option("--debug-sample", o.debug_sample,
                     "X,Y,S: trace only sample S of pixel (X,Y) with the reference integrator and print every vertex");
+    cmd->add_option("--debug-light-path", o.debug_light_path,
+                    "I,S: with light tracing, trace only light path I of sample S and print every vertex and its "
+                    "connection to the camera");
     cmd->add_option("--time-limit", o.time_limit,
                     "Stop at the last pass boundary within SECONDS of rendering and write the image it has "
                     "(the spp it reached is printed and in the image's metadata)")
@@ -171,6 +175,8 @@ int run_render_command(RenderCommandOptions& o) {
         o.render.accel = *parse_accel(o.accel_name);  // CLI checked membership
         if (o.debug_sample)
             return replay_sample(scene, o.render, parse_debug_sample(*o.debug_sample, settings.width, settings.height));
+        if (o.debug_light_path)
+            return replay_light_path(scene, o.render, parse_debug_light_path(*o.debug_light_path, scene));
 
         if (o.outputs.empty()) o.outputs.push_back(default_output(o, part));
 #if WAVETRACE_MPI

@@ -27,6 +27,7 @@ struct RenderCommandOptions {
     std::string isa_name = "auto";
     std::string accel_name = "auto";
     std::optional<std::string> debug_sample;  // "X,Y,S": replay one sample instead of rendering
+    std::optional<std::string> debug_light_path;  // "I,S": replay one light path instead of rendering
     std::optional<double> time_limit, write_every;  // seconds
     std::optional<std::string> checkpoint, resume, samples;  // samples: "BEGIN:END", a partial render
     double checkpoint_every = 300.0;                         // seconds

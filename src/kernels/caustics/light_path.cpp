@@ -117,7 +117,8 @@ LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const Ligh
     return out;
 }
 
-void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats) const {
+void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats,
+                            std::vector<LightPathVertexRecord>* record) const {
     const uint64_t key = light_path_key(scene_.settings.seed, index, sample);
     std::optional<LightRay> ray = start(key);
     ++counts.light_paths;
@@ -126,9 +127,16 @@ void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, 
         const Hit hit = closest(ray->ray);
         if (!hit.found()) return;
         const LightVertex v = at_vertex(key, vertex, *ray, hit);
+        bool was_blocked = false;
         if (v.connection) {
             ++counts.camera_connections;
-            if (!blocked(v.connection->ray, v.connection->tmax)) splats.push_back(v.connection->splat);
+            was_blocked = blocked(v.connection->ray, v.connection->tmax);
+            if (!was_blocked) splats.push_back(v.connection->splat);
+        }
+        if (record) {
+            const SurfacePoint s = surface_at(scene_, ray->ray, hit);
+            record->push_back({vertex, hit, s.material, s.position, ray->power * ray->weight,
+                               v.connection ? std::optional<CameraSplat>(v.connection->splat) : std::nullopt, was_blocked});
         }
         ray = v.next;
     }

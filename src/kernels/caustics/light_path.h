@@ -56,6 +56,17 @@ struct LightVertex {
     std::optional<LightRay> next;
 };
 
+// One vertex of a traced light path, for --debug-light-path.
+struct LightPathVertexRecord {
+    uint32_t vertex;
+    Hit hit;
+    uint32_t material;
+    glm::vec3 position;
+    glm::vec3 carried;  // power x weight arriving at the vertex
+    std::optional<CameraSplat> splat;  // the connection's splat, if it has one
+    bool connection_blocked = false;
+};
+
 // The vertex code of a light path, written once and scheduled two ways: one path at a time
 // (trace, for the reference integrator and --debug-sample) and as wavefront queues
 // (light_tracing_pass.cpp, on the SIMD kernels). Both call these in the same order and the
@@ -74,7 +85,9 @@ public:
     // each diffuse vertex the camera sees, if the path's first bounce was specular. The values are
     // already divided by the number of paths per sample, so the film divides the splat sums by
     // the samples alone.
-    void trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats) const;
+    // `record`, if given, receives every vertex.
+    void trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats,
+               std::vector<LightPathVertexRecord>* record = nullptr) const;
 
 private:
     std::optional<CameraConnection> connect_to_camera(const SurfacePoint& surface, const Material& m,
