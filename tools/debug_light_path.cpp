@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "kernels/caustics/light_path.h"
-#include "kernels/isa/intersect_dispatch.h"
+#include "replay_accel.h"
 
 namespace wt {
 
@@ -34,13 +34,8 @@ DebugLightPath parse_debug_light_path(const std::string& text, const Scene& scen
 }
 
 int replay_light_path(const Scene& scene, const RenderOptions& options, const DebugLightPath& d) {
-    // The same hits either way; a big scene is replayed through a BVH, as a render would trace it.
-    Bvh bvh;
-    BvhView tree;
-    const int width = intersect_kernels(options.isa.value_or(best_supported_isa())).width;
-    const bool use_bvh = resolve_accel(options.accel, scene.primitive_count(), width) == Accel::bvh;
-    if (use_bvh) bvh = build_bvh(scene, options.bvh), tree = bvh_view(bvh);
-    const LightPathTracer tracer(scene, use_bvh ? &tree : nullptr);
+    const ReplayAccel accel(scene, options);
+    const LightPathTracer tracer(scene, accel.view());
     RayCounts counts;
     std::vector<CameraSplat> splats;
     std::vector<LightPathVertexRecord> vertices;

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "kernels/isa/intersect_dispatch.h"
+#include "replay_accel.h"
 #include "kernels/reference_integrator.h"
 
 namespace wt {
@@ -36,13 +36,8 @@ int replay_sample(const Scene& scene, const RenderOptions& options, const DebugS
     RayCounts counts;
     std::vector<PathVertexRecord> vertices;
     const uint32_t pixel = uint32_t(d.y) * uint32_t(scene.settings.width) + uint32_t(d.x);
-    // The same hits either way; a big scene is replayed through a BVH so it takes no longer than a render would.
-    Bvh bvh;
-    BvhView tree;
-    const int width = intersect_kernels(options.isa.value_or(best_supported_isa())).width;
-    const bool use_bvh = resolve_accel(options.accel, scene.primitive_count(), width) == Accel::bvh;
-    if (use_bvh) bvh = build_bvh(scene, options.bvh), tree = bvh_view(bvh);
-    const glm::vec3 radiance = trace_reference_path(scene, pixel, d.sample, counts, &vertices, use_bvh ? &tree : nullptr);
+    const ReplayAccel accel(scene, options);
+    const glm::vec3 radiance = trace_reference_path(scene, pixel, d.sample, counts, &vertices, accel.view());
     std::cout.precision(9);
     std::cout << "pixel (" << d.x << "," << d.y << ") sample " << d.sample << " seed " << scene.settings.seed << "\n";
     for (const PathVertexRecord& v : vertices) {

@@ -1,0 +1,28 @@
+#pragma once
+// What a replayed path (--debug-sample, --debug-light-path) traces against: the same hits either
+// way, but a big scene is replayed through a BVH, as a render would trace it, so a replay takes
+// no longer than the render's own start.
+
+#include "kernels/accel/accel_choice.h"
+#include "kernels/accel/bvh.h"
+#include "kernels/accel/bvh_view.h"
+#include "kernels/isa/intersect_dispatch.h"
+#include "kernels/renderer.h"
+
+namespace wt {
+
+struct ReplayAccel {
+    Bvh bvh;
+    BvhView tree;
+    bool use_bvh = false;
+
+    ReplayAccel(const Scene& scene, const RenderOptions& options) {
+        const int width = intersect_kernels(options.isa.value_or(best_supported_isa())).width;
+        use_bvh = resolve_accel(options.accel, scene.primitive_count(), width) == Accel::bvh;
+        if (use_bvh) bvh = build_bvh(scene, options.bvh), tree = bvh_view(bvh);
+    }
+    // The tree, or null for the flat list.
+    const BvhView* view() const { return use_bvh ? &tree : nullptr; }
+};
+
+}  // namespace wt
