@@ -52,7 +52,7 @@ Film render_with(const SceneDescription& d, const AovSelection& aovs, Integrator
     options.integrator = integrator;
     options.threads = threads;
     options.aovs = aovs;
-    Film film(d.settings.width, d.settings.height, aov_film_channels(aovs));
+    Film film = test::film_for(scene, aovs);
     render(scene, options, film);
     return film;
 }

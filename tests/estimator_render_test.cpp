@@ -18,7 +18,9 @@ namespace wt {
 namespace {
 
 SceneDescription with_estimator(SceneDescription d, SamplerKind sampler, LightSampling lights, float clamp = 0.0f) {
-    d.settings.estimator = {sampler, lights, clamp};
+    d.settings.estimator.sampler = sampler;
+    d.settings.estimator.light_sampling = lights;
+    d.settings.estimator.clamp_indirect = clamp;
     return d;
 }
 
@@ -68,12 +70,21 @@ TEST(EstimatorOptions, BothIntegratorsAndAnyThreadCountGiveTheSameBits) {
 
 // The unbiased options estimate the default's image: per-pixel two-sample z-tests (variances
 // from each film's own samples) with a binomial allowance, and the same over the image.
+// The hexroom with its caustics left to the camera paths: these tests are about the camera
+// paths' estimators, and their per-pixel tests need each pixel's own variance, which splats
+// (light tracing's) do not have.
+SceneDescription hexroom_camera_paths(int width, int height, int spp, uint64_t seed) {
+    SceneDescription d = test::hexroom(width, height, spp, seed);
+    d.settings.estimator.caustics = CausticPaths::path;
+    return d;
+}
+
 TEST(EstimatorOptions, UnbiasedOptionsAgreeWithTheDefaultOnHexroom) {
-    const SceneDescription base_desc = test::hexroom(24, 24, 128, /*seed=*/1);
+    const SceneDescription base_desc = hexroom_camera_paths(24, 24, 128, /*seed=*/1);
     const test::RenderedFilm base = test::render_film(base_desc, Integrator::wavefront);
     for (const OptionCase& o : kOptions) {
         if (o.clamp > 0.0f) continue;
-        const SceneDescription d = with_estimator(test::hexroom(24, 24, 128, /*seed=*/2), o.sampler, o.lights);
+        const SceneDescription d = with_estimator(hexroom_camera_paths(24, 24, 128, /*seed=*/2), o.sampler, o.lights);
         SCOPED_TRACE(describe(d.settings.estimator));
         const test::RenderedFilm other = test::render_film(d, Integrator::wavefront);
         test::expect_films_agree(base.film, other.film, [&](uint32_t pixel) {
@@ -182,7 +193,7 @@ TEST(ClampIndirect, LowersTheMeanAndTheVarianceWhereCausticsMakeFireflies) {
     // large weights. The same seed draws the same paths, so every clamped sample is at most the
     // unclamped one: the mean can only drop, and must drop measurably (the bias), and the
     // variance with it.
-    const SceneDescription d = test::hexroom(32, 32, 32, 7);
+    const SceneDescription d = hexroom_camera_paths(32, 32, 32, 7);
     const test::RenderedFilm off = test::render_film(d, Integrator::wavefront);
     const test::RenderedFilm on =
         test::render_film(with_estimator(d, SamplerKind::stratified, LightSampling::nee, 1.0f), Integrator::wavefront);

@@ -192,11 +192,11 @@ TEST(LightTracing, SceneWithoutSpecularSurfacesTracesNoLightPaths) {
     EXPECT_TRUE(render_film_channels(scene, AovSelection{}).empty());
     const test::RenderedFilm r = test::render_film(d, Integrator::wavefront, 2);
     EXPECT_EQ(r.result.counts.light_paths, 0u);
-    // And a scene with them does, when asked, and only then.
+    // And a scene with them does (the default), and only when asked.
     SceneDescription h = test::hexroom(8, 8, 1);
-    EXPECT_FALSE(light_traces_caustics(h));
-    h.settings.estimator.caustics = CausticPaths::light_tracing;
     EXPECT_TRUE(light_traces_caustics(h));
+    h.settings.estimator.caustics = CausticPaths::path;
+    EXPECT_FALSE(light_traces_caustics(h));
 }
 
 SceneDescription hexroom_light_traced(int w, int h, int spp, uint64_t seed) {

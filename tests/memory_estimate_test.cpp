@@ -5,9 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include "kernels/caustics/light_tracing_pass.h"
 #include "kernels/memory_estimate.h"
 #include "kernels/wavefront/tiles.h"
 #include "kernels/wavefront/wavefront_renderer.h"
+#include "render_helpers.h"
 #include "test_scenes.h"
 
 namespace {
@@ -43,10 +45,13 @@ TEST(MemoryEstimate, AHugeBatchOnATinyImageRendersTheSameBitsWithSmallQueues) {
     huge.batch_paths = std::size_t(1) << 24;
     EXPECT_LT(wt::estimate_render_memory(scene, huge).queues_per_worker, 1e6);
     // One sample of each of the 256 pixels, which the default batch of 2048 also holds.
+    // The hexroom light-traces its caustics: its light paths' queues and splat buffer too.
+    ASSERT_TRUE(scene.light_traces_caustics);
     EXPECT_EQ(wt::estimate_render_memory(scene, huge).queues_per_worker,
-              double(wt::WavefrontWorkspace::bytes_needed(256, std::size_t(scene.settings.shadow_rays), false)));
+              double(wt::WavefrontWorkspace::bytes_needed(256, std::size_t(scene.settings.shadow_rays), false) +
+                     wt::LightTracingPass::bytes_per_worker()));
     EXPECT_EQ(wt::estimate_render_memory(scene, huge).queues_per_worker, wt::estimate_render_memory(scene, small).queues_per_worker);
-    wt::Film a(16, 16), b(16, 16);
+    wt::Film a = wt::test::film_for(scene), b = wt::test::film_for(scene);
     wt::render(scene, small, a);
     wt::render(scene, huge, b);
     EXPECT_EQ(a.resolve(), b.resolve());
@@ -70,7 +75,7 @@ TEST(MemoryEstimate, ARenderThatCannotFitIsRefusedNamingTheOptionToChange) {
     // The film: width x height x its bytes per pixel, as Film says.
     options.tile_size = 16;
     const wt::MemoryEstimate film = wt::estimate_render_memory(scene, options);
-    EXPECT_EQ(film.film, wt::Film::bytes_needed(800, 800));
+    EXPECT_EQ(film.film, wt::Film::bytes_needed(800, 800, 3));  // with the light paths' splat channels
     EXPECT_NE(wt::memory_problem(film, film.to_allocate() / 2).find("lower --width and --height"), std::string::npos);
 }
 

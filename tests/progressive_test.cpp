@@ -42,7 +42,7 @@ TEST(Progressive, PassesGiveTheOneShotFilmBitForBitWithEitherIntegrator) {
         SCOPED_TRACE(integrator == Integrator::wavefront ? "wavefront" : "reference");
         const test::RenderedFilm one_shot = test::render_film(d, integrator, 1);
         RenderSession session(scene, options_for(integrator, 2));
-        Film film(d.settings.width, d.settings.height);
+        Film film = test::film_for(scene);
         ProgressiveOptions po;
         po.samples = {0, uint32_t(d.settings.spp)};
         PassRecorder recorder;
@@ -64,13 +64,13 @@ TEST(Progressive, RangesRenderedIntoSeparateFilmsAddToTheWholeRender) {
     const test::RenderedFilm whole = test::render_film(d, Integrator::wavefront, 2);
     RenderSession session(scene, options_for(Integrator::wavefront, 3));
     // A resumed render (into the same film) and a split one (separate films, merged backwards).
-    Film resumed(d.settings.width, d.settings.height);
+    Film resumed = test::film_for(scene);
     session.render_samples(resumed, {0, 4});
     session.render_samples(resumed, {4, 11});
     EXPECT_TRUE(resumed == whole.film);
     std::vector<Film> parts;
     for (SampleRange range : {SampleRange{0, 2}, SampleRange{2, 7}, SampleRange{7, 11}}) {
-        parts.emplace_back(d.settings.width, d.settings.height);
+        parts.push_back(test::film_for(scene));
         session.render_samples(parts.back(), range);
     }
     Film merged = parts[2];
@@ -88,7 +88,7 @@ TEST(Progressive, RaisingTheSppOfAFinishedRenderGivesTheRenderOfTheLargerSpp) {
         SceneDescription d = test::hexroom(16, 12, 8, 4);
         d.settings.estimator.sampler = sampler;
         const Scene eight = build_scene(d);
-        Film film(16, 12);
+        Film film = test::film_for(eight);
         RenderSession(eight, options_for(Integrator::wavefront, 2)).render_samples(film, {0, 8});
         d.settings.spp = 20;
         const Scene twenty = build_scene(d);
@@ -127,7 +127,7 @@ TEST(Progressive, TheTimeLimitEndsAtTheLastPassBoundaryThatFits) {
     const SceneDescription d = test::hexroom(8, 8, 100, 1);
     const Scene scene = build_scene(d);
     RenderSession session(scene, options_for(Integrator::wavefront, 2));
-    Film film(8, 8);
+    Film film = test::film_for(scene);
     SampleClock clock(64);
     ProgressiveOptions po;
     po.samples = {0, 100};
@@ -148,7 +148,7 @@ TEST(Progressive, TheFirstPassRunsEvenWhenTheLimitHasPassedBeforeItStarts) {
     const SceneDescription d = test::hexroom(8, 8, 100, 1);
     const Scene scene = build_scene(d);
     RenderSession session(scene, options_for(Integrator::wavefront, 2));
-    Film film(8, 8);
+    Film film = test::film_for(scene);
     double now = 0.0;
     ProgressiveOptions po;
     po.samples = {0, 100};
@@ -177,7 +177,7 @@ TEST(Progressive, AStopRequestEndsTheRenderAtTheNextPassBoundary) {
     const SceneDescription d = test::hexroom(8, 8, 64, 1);
     const Scene scene = build_scene(d);
     RenderSession session(scene, options_for(Integrator::wavefront, 2));
-    Film film(8, 8);
+    Film film = test::film_for(scene);
     StopAfterPasses observer;
     ProgressiveOptions po;
     po.samples = {0, 64};
@@ -186,7 +186,7 @@ TEST(Progressive, AStopRequestEndsTheRenderAtTheNextPassBoundary) {
     EXPECT_EQ(r.reason, StopReason::interrupted);
     EXPECT_EQ(r.passes, 3u);
     EXPECT_EQ(r.end_sample, 4u);  // 1 + 1 + 2
-    Film first_four(8, 8);
+    Film first_four = test::film_for(scene);
     RenderSession(scene, options_for(Integrator::wavefront, 1)).render_samples(first_four, {0, 4});
     EXPECT_TRUE(film == first_four) << "the stopped render holds exactly the first 4 samples";
 }
@@ -195,7 +195,7 @@ TEST(Progressive, AResumedFilmContinuesTheDoublingFromItsOwnSpp) {
     const SceneDescription d = test::hexroom(8, 8, 40, 2);
     const Scene scene = build_scene(d);
     RenderSession session(scene, options_for(Integrator::wavefront, 2));
-    Film film(8, 8);
+    Film film = test::film_for(scene);
     session.render_samples(film, {0, 8});
     ProgressiveOptions po;
     po.samples = {8, 40};

@@ -39,6 +39,11 @@ inline RenderedFilm render_film(const SceneDescription& description, Integrator 
     return out;
 }
 
+// An empty film for a render of `scene` (with light tracing, its splat channels).
+inline Film film_for(const Scene& scene, const AovSelection& aovs = {}) {
+    return Film(scene.settings.width, scene.settings.height, render_film_channels(scene, aovs));
+}
+
 // Every sum (radiance, squares, extra channels) and count.
 inline bool films_bit_identical(const Film& a, const Film& b) { return a == b; }
 

@@ -19,6 +19,11 @@ SceneDescription small_hexroom(int spp) {
     return d;
 }
 
+// An empty film of the render's channels (the splats' with light tracing).
+Film empty_film(const SceneDescription& d) {
+    return Film(d.settings.width, d.settings.height, film_channels_for({}, light_traces_caustics(d)));
+}
+
 Film render_range(const SceneDescription& d, Film film, SampleRange range, int threads) {
     const Scene scene = build_scene(d);
     RenderOptions options;
@@ -36,9 +41,9 @@ Film through_checkpoint(const SceneDescription& d, const Film& film, SampleRange
 
 TEST(ResumeRender, InterruptedAndResumedEqualsUninterrupted) {
     const SceneDescription d = small_hexroom(8);
-    const Film whole = render_range(d, Film(24, 18), {0, 8}, 2);
+    const Film whole = render_range(d, empty_film(d), {0, 8}, 2);
     for (uint32_t stop : {1u, 3u, 7u}) {
-        const Film before = render_range(d, Film(24, 18), {0, stop}, 1);
+        const Film before = render_range(d, empty_film(d), {0, stop}, 1);
         EXPECT_FALSE(before == whole);
         const Film resumed = render_range(d, through_checkpoint(d, before, {0, stop}), {stop, 8}, 3);
         EXPECT_TRUE(resumed == whole) << "stopped at sample " << stop;
@@ -49,9 +54,9 @@ TEST(ResumeRender, RaisingSppGivesTheRenderOfTheLargerSpp) {
     for (SamplerKind sampler : {SamplerKind::stratified, SamplerKind::independent, SamplerKind::sobol}) {
         SceneDescription first = small_hexroom(4), raised = small_hexroom(9);
         first.settings.estimator.sampler = raised.settings.estimator.sampler = sampler;
-        const Film finished = render_range(first, Film(24, 18), {0, 4}, 2);
+        const Film finished = render_range(first, empty_film(first), {0, 4}, 2);
         const Film resumed = render_range(raised, through_checkpoint(first, finished, {0, 4}), {4, 9}, 2);
-        EXPECT_TRUE(resumed == render_range(raised, Film(24, 18), {0, 9}, 1)) << name_of(sampler);
+        EXPECT_TRUE(resumed == render_range(raised, empty_film(raised), {0, 9}, 1)) << name_of(sampler);
     }
 }
 

@@ -28,7 +28,7 @@ public:
     // Light paths per work item: they advance together through one worker's queues.
     static constexpr uint64_t kPathsPerItem = 2048;
     // Splats a worker collects before it takes the film's lock.
-    static constexpr std::size_t kBufferedSplats = 1 << 16;
+    static constexpr std::size_t kBufferedSplats = 1 << 14;
     // The splat buffer and, for the wavefront, the queues of one worker.
     static std::size_t bytes_per_worker();
 
