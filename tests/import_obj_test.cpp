@@ -158,6 +158,22 @@ TEST_F(ObjImport, CarriageReturnsAloneEndLines) {
     EXPECT_EQ(load_file("mac.obj").meshes[0].vertices, (std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
 }
 
+TEST_F(ObjImport, AUtf8ByteOrderMarkIsSkippedAndUtf16IsAnError) {
+    write("bom.obj", "\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_EQ(load_file("bom.obj").meshes[0].vertices, (std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
+    write("utf16.obj", std::string("\xFF\xFEv\0 \0", 6));
+    expect_mesh_error(error_for("utf16.obj"), "utf16.obj", "utf16.obj:1: the file is UTF-16 text (it starts with a byte order mark)");
+}
+
+TEST_F(ObjImport, MaterialNamesAreTrimmedAsInTheMtlFile) {
+    // tinyobjloader trims newmtl names but kept usemtl's blanks, so these two did not match.
+    write("m.mtl", "newmtl Hard Shiny Plastic \nKd 0.8 0.1 0.1\n");
+    write("m.obj", "mtllib m.mtl\n" + kPentagon + "usemtl  Hard Shiny Plastic  \nf 1 2 3\n");
+    const SceneDescription scene = load(R"({"type": "mesh_file", "file": "m.obj", "material": "from_file"})");
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.materials[scene.meshes[0].material].name, "m.obj/Hard Shiny Plastic");
+}
+
 TEST_F(ObjImport, TinyCoordinatesAreKeptAndUnderflowIsZero) {
     // 1e-40 is a float denormal; 1e-400 is below even a double's range.
     write("tiny.obj", "v 1e-40 -1e-400 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");

@@ -32,6 +32,7 @@ public:
         while (in_.read_line(buffer)) {
             // A lone "\r" ends a line too (old Mac files); "\r\n" is gone already.
             std::string_view rest(buffer);
+            if (line_ == 0) skip_byte_order_mark(rest);
             for (std::size_t cr; (cr = rest.find('\r')) != std::string_view::npos; rest.remove_prefix(cr + 1)) {
                 ++line_;
                 statement(rest.substr(0, cr));
@@ -51,6 +52,13 @@ private:
     }
 
     void note(const std::string& what) { mesh_.notes.push_back("line " + std::to_string(line_) + ": " + what); }
+
+    // A UTF-8 mark would make the first keyword unknown, and the first "v" lost unnoticed.
+    void skip_byte_order_mark(std::string_view& first_line) const {
+        if (first_line.substr(0, 3) == "\xEF\xBB\xBF") first_line.remove_prefix(3);
+        if (first_line.substr(0, 2) == "\xFE\xFF" || first_line.substr(0, 2) == "\xFF\xFE")
+            fail_at(1, "the file is UTF-16 text (it starts with a byte order mark); OBJ is read as ASCII or UTF-8");
+    }
 
     void statement(std::string_view line) {
         TextWords words(line);
