@@ -110,26 +110,20 @@ TEST_F(GltfAccessors, BadDataUris) {
                       "bad.gltf: Failed to decode 'uri' : data:application/octet-stream;base64,AAAA*AAA in Buffer");
 }
 
-TEST_F(GltfAccessors, AByteStrideShorterThanAnElementIsAnError) {
-    GltfFile f;
-    Bytes b;
-    for (int k = 0; k < 12; ++k) b.put(0.0f);
-    const int positions = f.accessor({{"bufferView", f.view(b.str(), 8)}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
-    f.primitive({{"attributes", {{"POSITION", positions}}}});
-    write("m.gltf", f.gltf());
-    expect_mesh_error(error_for("m.gltf"), "m.gltf",
-                      "accessor 0 (POSITION of mesh 0 primitive 0): bufferView 0 has byteStride 8, less than one element (12 bytes)");
-}
-
-TEST_F(GltfAccessors, StridedElementsPastTheViewAreAnError) {
-    GltfFile f;
-    Bytes b;
-    for (int k = 0; k < 3 * 6 + 2; ++k) b.put(0.0f);  // 80 bytes: the third vertex at 48..60 would be 8 short
-    const int positions = f.accessor({{"bufferView", f.view(b.str().substr(0, 56), 24)}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
-    f.primitive({{"attributes", {{"POSITION", positions}}}});
-    write("m.gltf", f.gltf());
-    expect_mesh_error(error_for("m.gltf"), "m.gltf",
-                      "accessor 0 (POSITION of mesh 0 primitive 0): 3 elements need 60 bytes of bufferView 0, which has 56");
+TEST_F(GltfAccessors, StridesShorterThanAnElementOrPastTheViewAreErrors) {
+    const struct { int stride; std::size_t view_bytes; std::string problem; } cases[] = {
+        {8, 48, "bufferView 0 has byteStride 8, less than one element (12 bytes)"},
+        // The third vertex at bytes 48..60 of a 56-byte view.
+        {24, 56, "3 elements need 60 bytes of bufferView 0, which has 56"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.stride);
+        GltfFile f;
+        const int view = f.view(std::string(c.view_bytes, '\0'), c.stride);
+        f.primitive({{"attributes", {{"POSITION", f.accessor({{"bufferView", view}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}})}}}});
+        write("m.gltf", f.gltf());
+        expect_mesh_error(error_for("m.gltf"), "m.gltf", "accessor 0 (POSITION of mesh 0 primitive 0): " + c.problem);
+    }
 }
 
 TEST_F(GltfAccessors, WrongTypesAndComponentTypesAreNamed) {
