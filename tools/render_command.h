@@ -21,6 +21,8 @@ struct RenderCommandOptions {
     std::optional<std::string> triangle_test, sphere_test, fresnel;
     std::optional<std::string> sampler, light_sampling;
     std::optional<float> clamp_indirect;
+    std::optional<float> adaptive_threshold;
+    std::optional<int> adaptive_min_spp;
     RenderOptions render;
     std::string integrator_name = "wavefront";
     std::string isa_name = "auto";

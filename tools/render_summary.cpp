@@ -1,9 +1,11 @@
 #include "render_summary.h"
 
 #include <algorithm>
+#include <iomanip>
 #include <ostream>
 #include <sstream>
 
+#include "kernels/adaptive/adaptive_summary.h"
 #include "kernels/isa/intersect_dispatch.h"
 
 namespace wt {
@@ -53,6 +55,14 @@ void print_render_summary(std::ostream& out, const RenderSummary& m) {
         << with_si_prefix(double(c.camera_rays)) << ", bounce " << with_si_prefix(double(c.bounce_rays)) << ", shadow "
         << with_si_prefix(double(c.shadow_rays)) << " rays)\n";
     out << "  NaN/Inf samples  " << c.nonfinite_samples << "\n";
+    if (m.adaptive && !m.adaptive->empty()) {
+        const AdaptiveSummary a = summarize_adaptive(*m.adaptive);
+        out << "  adaptive         threshold " << std::defaultfloat << settings.adaptive.threshold << ", min "
+            << settings.adaptive.min_spp << " spp: " << a.stopped << " of " << a.pixels << " pixels stopped ("
+            << std::fixed << std::setprecision(1) << 100.0 * double(a.stopped) / double(std::max<uint64_t>(1, a.pixels))
+            << " %), mean " << a.mean_spp << " spp\n";
+        out.precision(3);
+    }
     if (result.accel == Accel::bvh) {
         const BvhStats& b = result.bvh;
         const double prims = double(std::max<std::size_t>(1, b.primitive_count));

@@ -17,6 +17,8 @@ void set_sphere_test(RenderSettings& s, const std::string& v) { s.accuracy.spher
 void set_sampler(RenderSettings& s, const std::string& v) { s.estimator.sampler = *parse_sampler(v); }
 void set_light_sampling(RenderSettings& s, const std::string& v) { s.estimator.light_sampling = *parse_light_sampling(v); }
 void set_clamp(RenderSettings& s, const std::string& v) { s.estimator.clamp_indirect = std::stof(v); }
+void set_adaptive_threshold(RenderSettings& s, const std::string& v) { s.adaptive.threshold = std::stof(v); }
+void set_adaptive_min_spp(RenderSettings& s, const std::string& v) { s.adaptive.min_spp = std::stoi(v); }
 
 std::string shadow_rays(const RenderSettings& s) { return std::to_string(s.shadow_rays); }
 std::string rr_start(const RenderSettings& s) { return std::to_string(s.rr_start_bounce); }
@@ -26,11 +28,14 @@ std::string triangle_test(const RenderSettings& s) { return name_of(s.accuracy.t
 std::string sphere_test(const RenderSettings& s) { return name_of(s.accuracy.spheres); }
 std::string sampler(const RenderSettings& s) { return name_of(s.estimator.sampler); }
 std::string light_sampling(const RenderSettings& s) { return name_of(s.estimator.light_sampling); }
-std::string clamp(const RenderSettings& s) {
-    std::ostringstream out;  // 4 -> "4", as the table writes it
-    out << s.estimator.clamp_indirect;
+std::string shortest(float v) {
+    std::ostringstream out;  // 4 -> "4", 0.05f -> "0.05", as the table writes them
+    out << v;
     return out.str();
 }
+std::string clamp(const RenderSettings& s) { return shortest(s.estimator.clamp_indirect); }
+std::string adaptive_threshold(const RenderSettings& s) { return shortest(s.adaptive.threshold); }
+std::string adaptive_min_spp(const RenderSettings& s) { return std::to_string(s.adaptive.min_spp); }
 
 }  // namespace
 
@@ -47,6 +52,11 @@ const std::vector<Knob>& tradeoff_knobs() {
         {"light_sampling", {"nee", "mis"}, false, set_light_sampling, light_sampling},
         // 0 is off; the clamp trades bias (the mean drops where caustics are) for variance.
         {"clamp_indirect", {"0", "1", "4", "16"}, true, set_clamp, clamp},
+        // 0 is off. Stopping on an estimate of the error can bias (a heavy-tailed pixel whose
+        // rare bright paths have not shown yet looks converged), so the floor is reported.
+        {"adaptive_threshold", {"0", "0.03", "0.06", "0.12", "0.25"}, true, set_adaptive_threshold, adaptive_threshold},
+        // Changes nothing unless the scene has an adaptive_threshold: sweep it on such a scene.
+        {"adaptive_min_spp", {"4", "16", "64"}, true, set_adaptive_min_spp, adaptive_min_spp},
     };
     return knobs;
 }

@@ -16,7 +16,7 @@ std::string exact(float v) {
 }  // namespace
 
 std::vector<NamedSetting> image_settings(const RenderSettings& s) {
-    return {
+    std::vector<NamedSetting> settings = {
         {"seed", std::to_string(s.seed)},
         {"shadow_rays", std::to_string(s.shadow_rays)},
         {"max_bounces", std::to_string(s.max_bounces)},
@@ -27,7 +27,12 @@ std::vector<NamedSetting> image_settings(const RenderSettings& s) {
         {"sampler", name_of(s.estimator.sampler)},
         {"light_sampling", name_of(s.estimator.light_sampling)},
         {"clamp_indirect", exact(s.estimator.clamp_indirect)},
+        {"adaptive_threshold", exact(s.adaptive.threshold)},
     };
+    // The minimum changes nothing while adaptive sampling is off, so it does not keep such a
+    // render from being resumed with another.
+    if (s.adaptive.enabled()) settings.push_back({"adaptive_min_spp", std::to_string(s.adaptive.min_spp)});
+    return settings;
 }
 
 namespace {
