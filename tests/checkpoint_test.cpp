@@ -315,6 +315,21 @@ TEST(Checkpoint, AdaptiveSettingsAreImageSettings) {
     EXPECT_EQ(lines[1], "adaptive_min_spp: checkpoint 16, this render 32");
 }
 
+// The fuzz target's seeds (tests/fuzz/corpus/fuzz_checkpoint) are checkpoints this reader
+// accepts, so the fuzzer starts from the decoder's far end after every format change; one has
+// adaptive state.
+TEST(Checkpoint, TheFuzzSeedsAreValidCheckpoints) {
+    const fs::path corpus = fs::path(WT_SCENES_DIR) / ".." / "tests" / "fuzz" / "corpus" / "fuzz_checkpoint";
+    int seeds = 0, adaptive = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(corpus)) {
+        const Checkpoint c = read_checkpoint_file(e.path().string());
+        ++seeds;
+        adaptive += !c.film.adaptive().empty();
+    }
+    EXPECT_GE(seeds, 3);
+    EXPECT_EQ(adaptive, 1);
+}
+
 struct CheckpointFile : ::testing::Test {
     fs::path dir = fs::temp_directory_path() / ("wt_checkpoint_" + std::to_string(getpid()));
     void SetUp() override { fs::create_directories(dir); }
