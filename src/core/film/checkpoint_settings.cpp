@@ -6,7 +6,8 @@ namespace wt {
 
 namespace {
 
-// Nine significant digits tell every float apart: the clamp as it was parsed, not rounded.
+// Nine significant digits tell every float apart: the clamp and the threshold as they were
+// parsed, not rounded.
 std::string exact(float v) {
     char text[32];
     std::snprintf(text, sizeof text, "%.9g", double(v));
