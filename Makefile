@@ -17,7 +17,7 @@ FUZZ_BUILD_DIR ?= build-fuzz
 ASAN_BUILD_DIR ?= build-asan
 TSAN_BUILD_DIR ?= build-tsan
 # The tests that run the thread pool: renders on several threads, the BVH build, the pool.
-TSAN_TESTS ?= ^(Determinism|AccelRender|EdgeSettings|WavefrontVsReference|ThreadPool|MemoryEstimate|Bvh\.BuildInvariantsAndDeterminism)\.
+TSAN_TESTS ?= ^(Determinism|AdaptiveDeterminism|AccelRender|EdgeSettings|WavefrontVsReference|ThreadPool|MemoryEstimate|Bvh\.BuildInvariantsAndDeterminism)\.
 
 .PHONY: render render-mesh reference tradeoff spp-series test test-long test-mpi test-asan test-tsan fuzz bench bench-deps perf-gate perf-gate-update build deps configure clean
 

@@ -45,6 +45,19 @@ struct Merge : ::testing::Test {
     }
 };
 
+TEST_F(Merge, AnAdaptiveRenderIsNotMergedWithOtherParts) {
+    settings.adaptive.threshold = 0.1f;
+    Film adaptive = film_of(0, 4);
+    adaptive.adaptive().stopped_at.assign(6, AdaptiveState::still_sampling);
+    adaptive.adaptive().next_sample = 4;
+    const std::string path = (dir / "adaptive.ckpt").string();
+    write_checkpoint_file(path, {program_version(), 42, 0, 4, 4, image_settings(settings)}, adaptive);
+    const std::string other = part(4, 6, "other.ckpt");
+    EXPECT_EQ(refusal({path, other}), path + " is a render with adaptive sampling, which cannot be merged with other parts");
+    // Alone it is its own merge, state and all.
+    EXPECT_TRUE(merge_checkpoint_files({path}).merged.film == adaptive);
+}
+
 TEST_F(Merge, AnyOrderGivesTheFilmOfAllSamples) {
     std::vector<std::string> parts = {part(0, 3, "a.ckpt"), part(3, 4, "b.ckpt"), part(4, 9, "c.ckpt"), part(9, 9, "empty.ckpt")};
     const Film whole = film_of(0, 9);

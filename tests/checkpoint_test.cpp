@@ -6,6 +6,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -100,14 +101,84 @@ TEST(Checkpoint, FilmAndHeaderComeBackBitForBit) {
     EXPECT_LT(back.film.extra_mean(1, 1), 0.0);
 }
 
+// A film of an adaptive render at sample 4 of 8: pixel 1 stopped at 2 (with its 2 samples),
+// pixel 2 at 4, the others still sampled.
+Film adaptive_film(int width, int height) {
+    Film film = test_film(width, height, 4);
+    Film stopped = test_film(width, height, 2);
+    film.raw_counts()[1] = 2;
+    std::copy_n(stopped.raw_sums().begin() + 6, 6, film.raw_sums().begin() + 6);
+    film.adaptive().stopped_at.assign(film.pixel_total(), AdaptiveState::still_sampling);
+    film.adaptive().stopped_at[1] = 2;
+    film.adaptive().stopped_at[2] = 4;
+    film.adaptive().next_sample = 4;
+    return film;
+}
+
 TEST(Checkpoint, EveryTruncationIsRefused) {
-    const std::string bytes = checkpoint_bytes(test_header(), test_film(3, 2, 4));
-    for (std::size_t n = 0; n < bytes.size(); ++n) {
-        const std::string message = expect_refused(bytes.substr(0, n));
-        if (n >= 24) {
-            EXPECT_NE(message.find("truncated"), std::string::npos) << n << ": " << message;
+    for (const Film& film : {test_film(3, 2, 4), adaptive_film(3, 2)}) {
+        const std::string bytes = checkpoint_bytes(test_header(), film);
+        for (std::size_t n = 0; n < bytes.size(); ++n) {
+            const std::string message = expect_refused(bytes.substr(0, n));
+            if (n >= 24) {
+                EXPECT_NE(message.find("truncated"), std::string::npos) << n << ": " << message;
+            }
         }
     }
+}
+
+TEST(Checkpoint, AdaptiveStateComesBackBitForBit) {
+    const Film film = adaptive_film(3, 2);
+    const std::string bytes = checkpoint_bytes(test_header(), film);
+    EXPECT_NE(bytes.find("adaptive_state yes\n"), std::string::npos);
+    const Checkpoint back = parse_checkpoint(bytes, "a.ckpt");
+    EXPECT_TRUE(back.film == film);
+    EXPECT_EQ(back.film.adaptive().stopped_at[1], 2u);
+    EXPECT_EQ(back.film.adaptive().next_sample, 4u);
+    // Without adaptive sampling the block is absent and the film has no state.
+    const std::string plain = checkpoint_bytes(test_header(), test_film(3, 2, 4));
+    EXPECT_NE(plain.find("adaptive_state no\n"), std::string::npos);
+    EXPECT_EQ(bytes.size(), plain.size() + 6 * 4 + 1);  // a u32 per pixel, "yes" one byte longer than "no"
+    EXPECT_TRUE(parse_checkpoint(plain, "b.ckpt").film.adaptive().empty());
+    // Every flipped bit of the block is caught.
+    for (std::size_t i = bytes.size() - 8 - 24; i < bytes.size() - 8; ++i) {
+        std::string damaged = bytes;
+        damaged[i] ^= 4;
+        expect_refused(damaged);
+    }
+}
+
+// The block's claims are checked, also behind the checksum (the test re-checksums the file).
+TEST(Checkpoint, ImpossibleAdaptiveStatesAreRefused) {
+    const Film film = adaptive_film(3, 2);
+    const std::string bytes = checkpoint_bytes(test_header(), film);
+    const auto with_stop = [&](std::size_t pixel, uint32_t stop) {
+        std::string out = bytes.substr(0, bytes.size() - 8);
+        checkpoint_format::put_u32(reinterpret_cast<unsigned char*>(&out[out.size() - 24 + 4 * pixel]), stop);
+        unsigned char sum[8];
+        checkpoint_format::put_u64(sum, XXH3_64bits(out.data(), out.size()));
+        return out.append(reinterpret_cast<char*>(sum), 8);
+    };
+    EXPECT_NE(expect_refused(with_stop(0, 5)).find("pixel (0, 0) stopped at sample 5, after the file's next sample 4"),
+              std::string::npos);
+    EXPECT_NE(expect_refused(with_stop(2, 3)).find("pixel (2, 0) has 4 samples but stopped at sample 3"),
+              std::string::npos);
+    EXPECT_TRUE(parse_checkpoint(with_stop(0, 4), "ok.ckpt").film.adaptive().stopped_at[0] == 4u);
+    EXPECT_NE(expect_refused(with_header(bytes, "adaptive_state yes", "adaptive_state maybe"))
+                  .find("adaptive_state must be yes or no, got 'maybe'"),
+              std::string::npos);
+    EXPECT_NE(expect_refused(with_header(bytes, "samples 0 4 8", "samples 1 4 8"))
+                  .find("an adaptive render's checkpoint starts at sample 0, this one at 1"),
+              std::string::npos);
+    // "no" with the block there: the header describes a shorter file.
+    EXPECT_NE(expect_refused(with_header(bytes, "adaptive_state yes", "adaptive_state no")).find("data after the end"),
+              std::string::npos);
+}
+
+TEST(Checkpoint, TheWriterRefusesAStateOfOtherSamples) {
+    const Film film = adaptive_film(3, 2);  // at sample 4
+    EXPECT_THROW(checkpoint_bytes(test_header(0, 5, 8), film), std::invalid_argument);
+    EXPECT_THROW(checkpoint_bytes(test_header(1, 4, 8), film), std::invalid_argument);
 }
 
 // What a fuzz target sees with the checksum off: every damaged file is still refused or read
@@ -145,9 +216,14 @@ TEST(Checkpoint, EveryFlippedBitIsRefused) {
 TEST(Checkpoint, ForeignFilesAreNamedForWhatTheyAre) {
     const std::string bytes = checkpoint_bytes(test_header(), test_film(2, 2, 3));
     EXPECT_NE(expect_refused("P6\n2 2\n255\n............").find("not a wavetrace checkpoint"), std::string::npos);
-    std::string version2 = bytes;
-    version2[8] = 2;
-    EXPECT_NE(expect_refused(version2).find("byte 8: checkpoint format version 2, this program reads version 1"),
+    std::string version1 = bytes, version3 = bytes;
+    version1[8] = 1;
+    version3[8] = 3;
+    EXPECT_NE(expect_refused(version1).find("byte 8: checkpoint format version 1, this program reads version 2 (version 2 "
+                                            "added adaptive sampling's per-pixel state): resume or merge it with the "
+                                            "wavetrace that wrote it"),
+              std::string::npos);
+    EXPECT_NE(expect_refused(version3).find("byte 8: checkpoint format version 3, this program reads version 2"),
               std::string::npos);
     CheckpointHeader old = test_header();
     old.program_version = "0.0.1";
@@ -218,6 +294,40 @@ TEST(Checkpoint, EstimatorSettingsAreStoredExactlyAndSppIsNot) {
     EXPECT_EQ(setting(s, "light_sampling"), "mis");
     s.estimator.clamp_indirect = 0.1f;
     EXPECT_EQ(setting(s, "clamp_indirect"), "0.100000001");
+}
+
+TEST(Checkpoint, AdaptiveSettingsAreImageSettings) {
+    RenderSettings s;
+    EXPECT_EQ(setting(s, "adaptive_threshold"), "0");
+    EXPECT_EQ(setting(s, "adaptive_min_spp"), "(absent)") << "changes nothing while adaptive sampling is off";
+    RenderSettings a = s;
+    a.adaptive.threshold = 0.05f;
+    EXPECT_EQ(setting(a, "adaptive_threshold"), "0.0500000007");
+    EXPECT_EQ(setting(a, "adaptive_min_spp"), "16");
+    RenderSettings b = a;
+    b.adaptive.threshold = 0.1f;
+    b.adaptive.min_spp = 32;
+    CheckpointHeader ha = test_header(), hb = test_header();
+    ha.settings = image_settings(a), hb.settings = image_settings(b);
+    const std::vector<std::string> lines = checkpoint_differences(ha, {4, 4, {}}, "checkpoint", hb, {4, 4, {}}, "this render");
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0], "adaptive_threshold: checkpoint 0.0500000007, this render 0.100000001");
+    EXPECT_EQ(lines[1], "adaptive_min_spp: checkpoint 16, this render 32");
+}
+
+// The fuzz target's seeds (tests/fuzz/corpus/fuzz_checkpoint) are checkpoints this reader
+// accepts, so the fuzzer starts from the decoder's far end after every format change; one has
+// adaptive state.
+TEST(Checkpoint, TheFuzzSeedsAreValidCheckpoints) {
+    const fs::path corpus = fs::path(WT_SCENES_DIR) / ".." / "tests" / "fuzz" / "corpus" / "fuzz_checkpoint";
+    int seeds = 0, adaptive = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(corpus)) {
+        const Checkpoint c = read_checkpoint_file(e.path().string());
+        ++seeds;
+        adaptive += !c.film.adaptive().empty();
+    }
+    EXPECT_GE(seeds, 3);
+    EXPECT_EQ(adaptive, 1);
 }
 
 struct CheckpointFile : ::testing::Test {

@@ -47,4 +47,23 @@ TEST(CliValues, CliElevenReadsTheNumberTheTransformAccepted) {
     EXPECT_NE(parse("\xff\x1b[31m", spp, 1, 10).find("got '\\xff\\x1b[31m'"), std::string::npos);
 }
 
+TEST(CliValues, NonNegativeFloatIsFiniteAndDecimal) {
+    const auto check = [](std::string text) {
+        CLI::App app;
+        float value = -1.0f;
+        app.add_option("--x", value)->check(wt::non_negative_float());
+        try {
+            app.parse(std::vector<std::string>{text, "--x"});
+            return std::to_string(value);
+        } catch (const CLI::ParseError& e) {
+            return std::string(e.what());
+        }
+    };
+    EXPECT_EQ(check("0"), std::to_string(0.0f));
+    EXPECT_EQ(check("0.05"), std::to_string(0.05f));
+    EXPECT_EQ(check("1e-3"), std::to_string(1e-3f));
+    for (const char* bad : {"-0.1", "inf", "nan", "infinity", "0x1p3", "1e39", "", " 1", "1 ", "lots"})
+        EXPECT_NE(check(bad).find("expected a finite number >= 0"), std::string::npos) << bad;
+}
+
 }  // namespace

@@ -140,44 +140,149 @@ TEST_F(ObjImport, FacesWithoutAMaterialGetTheFileDefault) {
     EXPECT_EQ(scene.materials[scene.meshes[1].material].name, "m.obj/red");
 }
 
+TEST_F(ObjImport, WhatDoesNotPlaceAVertexIsSkipped) {
+    // w and vertex colours after x y z, a leading "+", texture coordinates in the corners (by
+    // a negative index too), trailing comments, tabs, lines, points, smoothing groups.
+    write("extras.obj", "v 0 0 0 1\nv\t+1 0 0 0.5 0.5 0.5\nv 0 1 0 # the top\nvt 0 0\nvt 1 0\nvn 0 0 1\n"
+                        "s 1\nl 1 2\np 3\nf 1/1 2/-1 3/1 # a comment\nf 1/1/1 3/2/1 2//1\n");
+    const TriangleMesh mesh = load_file("extras.obj").meshes[0];
+    EXPECT_EQ(mesh.triangles, (Triangles{{0, 1, 2}, {0, 2, 1}}));
+    EXPECT_EQ(mesh.vertices, (std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
+}
+
+TEST_F(ObjImport, CarriageReturnsAloneEndLines) {
+    write("mac.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\rf 1 2 4\r");
+    // Line 5 is the fifth statement, however the lines end.
+    expect_mesh_error(error_for("mac.obj"), "mac.obj", "mac.obj:5: vertex index 4 out of range (the file has 3 vertices)");
+    write("mac.obj", "v 0 0 0\rv 1 0 0\r\nv 0 1 0\rf 1 2 3\r");
+    EXPECT_EQ(load_file("mac.obj").meshes[0].vertices, (std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
+}
+
+TEST_F(ObjImport, AUtf8ByteOrderMarkIsSkippedAndUtf16IsAnError) {
+    write("bom.obj", "\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_EQ(load_file("bom.obj").meshes[0].vertices, (std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
+    write("utf16.obj", std::string("\xFF\xFEv\0 \0", 6));
+    expect_mesh_error(error_for("utf16.obj"), "utf16.obj", "utf16.obj:1: the file is UTF-16 text (it starts with a byte order mark)");
+}
+
+TEST_F(ObjImport, MaterialNamesAreTrimmedAsInTheMtlFile) {
+    // tinyobjloader trims newmtl names but kept usemtl's blanks, so these two did not match.
+    write("m.mtl", "newmtl Hard Shiny Plastic \nKd 0.8 0.1 0.1\n");
+    write("m.obj", "mtllib m.mtl\n" + kPentagon + "usemtl  Hard Shiny Plastic  \nf 1 2 3\n");
+    const SceneDescription scene = load(R"({"type": "mesh_file", "file": "m.obj", "material": "from_file"})");
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.materials[scene.meshes[0].material].name, "m.obj/Hard Shiny Plastic");
+}
+
+TEST_F(ObjImport, TinyCoordinatesAreKeptAndUnderflowIsZero) {
+    // 1e-40 is a float denormal; 1e-400 is below even a double's range.
+    write("tiny.obj", "v 1e-40 -1e-400 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const glm::vec3 v = load_file("tiny.obj").meshes[0].vertices[0];
+    EXPECT_EQ(v.x, 1e-40f);
+    EXPECT_EQ(v.y, 0.0f);
+}
+
+TEST_F(ObjImport, EveryMtllibFileIsRead) {
+    write("a.mtl", "newmtl red\nKd 0.8 0.1 0.1\n");
+    write("b c.mtl", "newmtl blue\nKd 0.1 0.1 0.8\n");
+    write("m.obj", "mtllib a.mtl b\\ c.mtl\n" + kPentagon + "usemtl blue\nf 1 2 3\nusemtl red\nf 1 3 4\n");
+    const SceneDescription scene = load(R"({"type": "mesh_file", "file": "m.obj", "material": "from_file"})");
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    EXPECT_EQ(scene.materials[scene.meshes[0].material].name, "m.obj/blue");
+    EXPECT_EQ(scene.materials[scene.meshes[1].material].name, "m.obj/red");
+    EXPECT_TRUE(scene.notes.empty()) << scene.notes[0];
+}
+
+TEST_F(ObjImport, AMissingMtlFileOrMaterialIsANoteWithItsLine) {
+    write("m.obj", kPentagon + "mtllib nope.mtl\nusemtl red\nf 1 2 3\nusemtl red\nf 1 3 4\n");
+    const SceneDescription scene = load(R"({"type": "mesh_file", "file": "m.obj", "material": "from_file"})");
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.materials[scene.meshes[0].material].name, "m.obj/default");
+    ASSERT_EQ(scene.notes.size(), 2u);  // the second "usemtl red" says nothing new
+    EXPECT_NE(scene.notes[0].find("m.obj: line 6: mtllib nope.mtl: not read ("), std::string::npos) << scene.notes[0];
+    EXPECT_NE(scene.notes[0].find("nope.mtl: cannot open: No such file or directory"), std::string::npos) << scene.notes[0];
+    EXPECT_NE(scene.notes[1].find("m.obj: line 7: usemtl red: no such material"), std::string::npos) << scene.notes[1];
+}
+
 // ---------------------------------------------------------------------------------------------
 // Bad input
 
 TEST_F(ObjImport, IndexOutOfRange) {
     write("bad.obj", kPentagon + "f 1 2 3\nf 1 2 6\n");
-    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 2: vertex index 6 out of range (the file has 5 vertices)");
+    expect_mesh_error(error_for("bad.obj"), "bad.obj", "bad.obj:7: vertex index 6 out of range (the file has 5 vertices)");
 }
 
 TEST_F(ObjImport, NegativeIndexBeforeTheFirstVertex) {
     write("bad.obj", kPentagon + "f -1 -2 -6\n");
-    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 1: vertex index -6 reaches before the first (5 defined so far)");
+    expect_mesh_error(error_for("bad.obj"), "bad.obj", "bad.obj:6: vertex index -6 reaches before the first (5 defined so far)");
 }
 
 TEST_F(ObjImport, FacesMayNameVerticesDefinedLater) {
     write("later.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n");
     EXPECT_EQ(load_file("later.obj").meshes[0].triangles, (Triangles{{0, 1, 2}}));
     write("never.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\n");
-    expect_mesh_error(error_for("never.obj"), "never.obj", "face 1: vertex index 3 out of range (the file has 2 vertices)");
+    expect_mesh_error(error_for("never.obj"), "never.obj", "never.obj:2: vertex index 3 out of range (the file has 2 vertices)");
 }
 
 TEST_F(ObjImport, NormalIndexOutOfRange) {
     write("bad.obj", kPentagon + "vn 0 0 1\nf 1//1 2//1 3//2\n");
-    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 1: normal index 2 out of range (1 normals defined so far)");
+    expect_mesh_error(error_for("bad.obj"), "bad.obj", "bad.obj:7: normal index 2 out of range (1 normals defined so far)");
 }
 
 TEST_F(ObjImport, ZeroIndex) {
     write("bad.obj", kPentagon + "\nf 1 2 3\nf 0 1 2\n");
-    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 2: vertex index 0 (OBJ counts from 1)");
+    expect_mesh_error(error_for("bad.obj"), "bad.obj", "bad.obj:8: vertex index 0 (OBJ counts from 1)");
 }
 
 TEST_F(ObjImport, FaceWithTwoVertices) {
     write("bad.obj", kPentagon + "f 1 2 3\ng two\nf 1 2\n");
-    expect_mesh_error(error_for("bad.obj"), "bad.obj", "face 2 (in group \"two\"): a face needs at least 3 vertices, got 2");
+    expect_mesh_error(error_for("bad.obj"), "bad.obj", "bad.obj:8: a face needs at least 3 vertices, got 2");
 }
 
 TEST_F(ObjImport, InfiniteVertex) {
     write("bad.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n");
-    expect_mesh_error(error_for("bad.obj"), "bad.obj", "vertex 2 (the 2th \"v\" line) is not finite");
+    expect_mesh_error(error_for("bad.obj"), "bad.obj", "bad.obj:2: vertex coordinate \"1e999\" is not finite");
+}
+
+TEST_F(ObjImport, CoordinatesThatAreNotFiniteNumbersNameTheLine) {
+    // tinyobjloader read all of these as 0, so the file loaded with vertices at the origin.
+    const struct { const char* line; const char* problem; } cases[] = {
+        {"v nan 0 0", "bad.obj:2: vertex coordinate \"nan\" is not finite"},
+        {"v 0 -inf 0", "bad.obj:2: vertex coordinate \"-inf\" is not finite"},
+        {"v 1e39 0 0", "bad.obj:2: vertex coordinate \"1e39\" is not finite in float"},
+        {"v abc 0 0", "bad.obj:2: vertex coordinate \"abc\" is not a number"},
+        {"v 0 1.5abc 0", "bad.obj:2: vertex coordinate \"1.5abc\" is not a number"},
+        {"v 0 0x10 0", "bad.obj:2: vertex coordinate \"0x10\" is not a number"},
+        {"v 0 ++1 0", "bad.obj:2: vertex coordinate \"++1\" is not a number"},
+        {"v 1 2", "bad.obj:2: a vertex needs 3 coordinates, got 2"},
+        {"v 1 2 # 3", "bad.obj:2: a vertex needs 3 coordinates, got 2"},
+        {"vn 0 0 x", "bad.obj:2: normal coordinate \"x\" is not a number"},
+        {"vn nan 0 1", "bad.obj:2: normal coordinate \"nan\" is not finite"},
+    };
+    for (const auto& c : cases) {
+        write("bad.obj", std::string("v 0 0 0\n") + c.line + "\nv 1 0 0\nv 0 1 0\nf 1 3 4\n");
+        expect_mesh_error(error_for("bad.obj"), "bad.obj", c.problem);
+    }
+}
+
+TEST_F(ObjImport, IndicesAreReportedAsWritten) {
+    // Past 2^32 (tinyobjloader wrapped 99999999999 to 1215752191), past 2^63, and not numbers.
+    const struct { const char* face; const char* problem; } cases[] = {
+        {"f 1 2 99999999999", "bad.obj:6: vertex index 99999999999 out of range (the file has 5 vertices)"},
+        {"f 1 2 99999999999999999999999", "bad.obj:6: vertex index 99999999999999999999999 out of range"},
+        {"f 1 2 -99999999999", "bad.obj:6: vertex index -99999999999 reaches before the first (5 defined so far)"},
+        {"f 1 2 x", "bad.obj:6: vertex index \"x\" is not an integer"},
+        {"f 1 2 3.0", "bad.obj:6: vertex index \"3.0\" is not an integer"},
+        {"f 1 2/x 3", "bad.obj:6: texture coordinate index \"x\" is not an integer"},
+        {"f 1 2//0 3", "bad.obj:6: normal index 0 (OBJ counts from 1)"},
+        {"f 1 2/1/ 3", "bad.obj:6: face corner \"2/1/\" is not v, v/vt, v/vt/vn or v//vn"},
+        {"f 1 2/1/1/1 3", "bad.obj:6: face corner \"2/1/1/1\" is not v, v/vt, v/vt/vn or v//vn"},
+        {"f", "bad.obj:6: a face needs at least 3 vertices, got 0"},
+    };
+    for (const auto& c : cases) {
+        write("bad.obj", kPentagon + c.face + "\n");
+        expect_mesh_error(error_for("bad.obj"), "bad.obj", c.problem);
+    }
 }
 
 TEST_F(ObjImport, NoFacesIsAnEmptyMesh) {

@@ -108,6 +108,32 @@ std::string ascii_with(const std::string& from, const std::string& to) {
     return text.replace(at, from.size(), to);
 }
 
+TEST_F(PlyImport, AHeaderLineThatIsNotPlyIsSkippedWithANote) {
+    // Blender 2.4 wrote "Created by ..." without "comment" (assimp-testmodels' Wuson.ply).
+    write("one.ply", ascii_with("comment a square and a triangle", "Created by Blender3D 247 - www.blender.org, source file: "));
+    const SceneDescription one = load_file("one.ply");
+    expect_square_and_triangle(one);
+    ASSERT_EQ(one.notes.size(), 1u);
+    EXPECT_NE(one.notes[0].find("scene.json: shapes[0].file: " + path("one.ply") +
+                                ": skipped a header line that is not PLY, line 3: \"Created by Blender3D 247"),
+              std::string::npos)
+        << one.notes[0];
+    // Binary too; several such lines are one note, naming the first.
+    std::string binary = binary_ply(false, kVertices, kFaces, kNormals);
+    binary.replace(binary.find("comment written"), 15, "Written");
+    binary.insert(binary.find("element face"), "obj_info fine\n" + std::string(200, 'x') + "\n");
+    write("two.ply", binary);
+    const SceneDescription two = load_file("two.ply");
+    expect_square_and_triangle(two);
+    ASSERT_EQ(two.notes.size(), 1u);
+    EXPECT_NE(two.notes[0].find("skipped 2 header lines that are not PLY, the first line 3: \"Written by the wavetrace tests\""),
+              std::string::npos)
+        << two.notes[0];
+    // What looks like the layout stays an error.
+    write("bad.ply", ascii_with("element face 2", "element face two"));
+    expect_mesh_error(error_for("bad.ply"), "bad.ply:11: malformed element line: \"element face two\"", "");
+}
+
 TEST_F(PlyImport, MalformedNumberNamesTheLine) {
     write("bad.ply", ascii_with("1 1 0 0 0 1", "1 abc 0 0 0 1"));
     expect_mesh_error(error_for("bad.ply"), "bad.ply:16: not a number: \"abc\"", "");

@@ -77,6 +77,10 @@ TEST(MemoryEstimate, ARenderThatCannotFitIsRefusedNamingTheOptionToChange) {
     const wt::MemoryEstimate film = wt::estimate_render_memory(scene, options);
     EXPECT_EQ(film.film, wt::Film::bytes_needed(800, 800, 3));  // with the light paths' splat channels
     EXPECT_NE(wt::memory_problem(film, film.to_allocate() / 2).find("lower --width and --height"), std::string::npos);
+    // Adaptive sampling adds each pixel's stop and the rule's flag: 5 bytes.
+    wt::Scene adaptive = scene;
+    adaptive.settings.adaptive.threshold = 0.1f;
+    EXPECT_EQ(wt::estimate_render_memory(adaptive, options).film, wt::Film::bytes_needed(800, 800) + 800.0 * 800.0 * 5);
 }
 
 TEST(MemoryEstimate, TheBvhIsCountedOnlyWhenOneIsBuilt) {

@@ -399,7 +399,7 @@ TEST(SceneErrors, UnknownRenderKey) {
     expect_scene_error(mutated([](Json& j) { j["render"]["samples"] = 4; }),
                        "render.samples: unknown key (allowed: width, height, spp, shadow_rays, seed, max_bounces, "
                        "rr_start_bounce, triangle_test, sphere_test, fresnel, sampler, light_sampling, clamp_indirect, caustics, "
-                       "light_paths_per_pixel)");
+                       "light_paths_per_pixel, adaptive_threshold, adaptive_min_spp)");
 }
 
 TEST(SceneErrors, UnknownAccuracyChoice) {
@@ -451,6 +451,34 @@ TEST(SceneErrors, BadEstimatorOption) {
     expect_scene_error(mutated([](Json& j) { j["render"]["clamp_indirect"] = -1; }),
                        "render.clamp_indirect: must be non-negative (0 turns the clamp off), got -1");
     expect_scene_error(mutated([](Json& j) { j["render"]["clamp_indirect"] = "high"; }), "render.clamp_indirect: expected a number");
+}
+
+TEST(SceneLoader, ReadsAdaptiveSampling) {
+    const SceneDescription defaults = parse_scene_json(mutated([](Json&) {}), "test.json");
+    EXPECT_FALSE(defaults.settings.adaptive.enabled()) << "off by default";
+    EXPECT_EQ(defaults.settings.adaptive.min_spp, 16);
+    const SceneDescription d = parse_scene_json(
+        mutated([](Json& j) {
+            j["render"]["adaptive_threshold"] = 0.05;
+            j["render"]["adaptive_min_spp"] = 32;
+        }),
+        "test.json");
+    EXPECT_TRUE(d.settings.adaptive.enabled());
+    EXPECT_EQ(d.settings.adaptive.threshold, 0.05f);
+    EXPECT_EQ(d.settings.adaptive.min_spp, 32);
+}
+
+TEST(SceneErrors, BadAdaptiveSampling) {
+    expect_scene_error(mutated([](Json& j) { j["render"]["adaptive_threshold"] = -0.1; }),
+                       "render.adaptive_threshold: must be non-negative (0 turns adaptive sampling off), got -0.1");
+    expect_scene_error(mutated([](Json& j) { j["render"]["adaptive_threshold"] = "low"; }),
+                       "render.adaptive_threshold: expected a number");
+    expect_scene_error(mutated([](Json& j) { j["render"]["adaptive_min_spp"] = 1; }),
+                       "render.adaptive_min_spp: must be an integer in [2, 1048576], got 1");
+    expect_scene_error(mutated([](Json& j) { j["render"]["adaptive_min_spp"] = 16.5; }),
+                       "render.adaptive_min_spp: expected an integer (no decimal point or exponent)");
+    expect_scene_error(mutated([](Json& j) { j["render"]["adaptive_min_spp"] = 2000000; }),
+                       "render.adaptive_min_spp: must be an integer in [2, 1048576], got 2000000");
 }
 
 TEST(SceneErrors, UnknownMaterialKey) {

@@ -1,5 +1,9 @@
 #include "cli_values.h"
 
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
 #include "core/printable.h"
 
 namespace wt {
@@ -26,6 +30,23 @@ CLI::Validator decimal_integer(uint64_t lo, uint64_t hi) {
             return {};
         },
         range);
+}
+
+CLI::Validator non_negative_float() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            const std::string expected = "expected a finite number >= 0, got '" + printable(text) + "'";
+            // Decimal notation only, as JSON writes numbers: no hex floats, no "inf" or "nan".
+            if (text.empty() || text.find_first_not_of("0123456789.eE+-") != std::string::npos) return expected;
+            char* end = nullptr;
+            errno = 0;
+            const double value = std::strtod(text.c_str(), &end);
+            if (*end != '\0' || errno == ERANGE || !std::isfinite(value) || !(value >= 0.0) ||
+                !std::isfinite(float(value)))
+                return expected;
+            return {};
+        },
+        "NUMBER >= 0");
 }
 
 std::string printable_failure_message(const CLI::App* app, const CLI::Error& e) {

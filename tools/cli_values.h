@@ -21,6 +21,10 @@ std::optional<uint64_t> parse_decimal(const std::string& text);
 // the value with non-printable bytes escaped.
 CLI::Validator decimal_integer(uint64_t lo, uint64_t hi);
 
+// A CLI11 check: a finite number >= 0 that fits a 32-bit float, as the scene file reads one
+// (CLI11's NonNegativeNumber lets "inf" and "nan" through).
+CLI::Validator non_negative_float();
+
 // A CLI11 failure message with the error's non-printable bytes escaped.
 std::string printable_failure_message(const CLI::App* app, const CLI::Error& e);
 

@@ -52,6 +52,12 @@ Checkpoint checkpoint_to_resume(const std::string& path, uint64_t scene_hash, co
         checkpoint_differences(checkpoint.header, layout_of(checkpoint.film), "checkpoint", expected, layout, "this render");
     if (!differences.empty())
         throw CheckpointError(describe_differences(path + ": not a checkpoint of this render", differences));
+    // The settings match, so only a damaged or hand-made file gets here without the state its
+    // adaptive_threshold says it has.
+    if (settings.adaptive.enabled() == checkpoint.film.adaptive().empty())
+        throw CheckpointError(path + (settings.adaptive.enabled()
+                                          ? ": has no adaptive sampling state, but its adaptive_threshold is not 0"
+                                          : ": has adaptive sampling state, but its adaptive_threshold is 0"));
     return checkpoint;
 }
 

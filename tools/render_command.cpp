@@ -69,6 +69,11 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::Range(1.0 / 1024, 64.0));
     cmd->add_option("--clamp-indirect", o.clamp_indirect, "Limit each indirect contribution to X per channel (0: off)")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--adaptive-threshold", o.adaptive_threshold,
+                    "Adaptive sampling: a pixel stops once its error and its neighbours' are below X (0: off)")
+        ->check(non_negative_float());
+    cmd->add_option("--adaptive-min-spp", o.adaptive_min_spp, "Adaptive sampling: no pixel stops before N samples")
+        ->transform(decimal_integer(adaptive_min_spp_lowest, 1 << 20));
     cmd->add_option("--isa", o.isa_name, "Intersection kernels: scalar, sse4, avx2, avx512 or auto (the best this CPU runs)")
         ->check(CLI::IsMember({"auto", "scalar", "sse4", "avx2", "avx512"}));
     cmd->add_option("--accel", o.accel_name,
@@ -134,6 +139,24 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.clamp_indirect) s.estimator.clamp_indirect = *o.clamp_indirect;
     if (o.caustics) s.estimator.caustics = *parse_caustic_paths(*o.caustics);
     if (o.light_paths_per_pixel) s.estimator.light_paths_per_pixel = float(*o.light_paths_per_pixel);
+    if (o.adaptive_threshold) s.adaptive.threshold = *o.adaptive_threshold;
+    if (o.adaptive_min_spp) s.adaptive.min_spp = *o.adaptive_min_spp;
+}
+
+// Adaptive sampling decides at each decision point from the whole film, all samples before it
+// included: a part of a split render, or a rank's chunks, does not have them.
+void check_adaptive_combinations(const RenderCommandOptions& o, const RenderSettings& s) {
+    if (!s.adaptive.enabled()) return;
+    if (o.samples)
+        throw std::runtime_error("--samples " + *o.samples +
+                                 ": a render with adaptive sampling cannot be split into sample ranges (its stopping "
+                                 "decisions need every sample before them in one film); render it in one process, with "
+                                 "--checkpoint and --resume to stop and continue, or set --adaptive-threshold 0");
+#if WAVETRACE_MPI
+    if (MpiJob::active())
+        throw std::runtime_error("adaptive sampling is not supported under mpirun (its stopping decisions need the whole "
+                                 "film at every decision point); run without mpirun, or set --adaptive-threshold 0");
+#endif
 }
 
 std::string default_output(const RenderCommandOptions& o, SampleRange part) {
@@ -150,6 +173,7 @@ int run_render_command(RenderCommandOptions& o) {
         if (!o.quiet)
             for (const std::string& note : description.notes) std::cerr << "wavetrace: note: " << note << "\n";
         apply_overrides(o, description.settings);
+        check_adaptive_combinations(o, description.settings);
         if (o.resume && o.samples) throw std::runtime_error("--resume continues the range it holds: no --samples with it");
         // A partial render's samples; otherwise [0, spp).
         const SampleRange part = o.samples ? parse_sample_range(*o.samples) : SampleRange{};
@@ -254,7 +278,7 @@ int run_render_command(RenderCommandOptions& o) {
             std::vector<std::string> written = o.outputs;
             if (o.checkpoint) written.push_back(*o.checkpoint);
             RenderSummary summary{o.scene_path, o.integrator_name, &scene, &o.render, session.result(), passes_done,
-                                  passes_done.end_sample - first, written};
+                                  passes_done.end_sample - first, written, &film.adaptive()};
             print_render_summary(std::cout, summary);
         }
         error_log.finish(session.result().seconds, passes_done.end_sample - first, film, o.quiet ? nullptr : &std::cout);

@@ -1,9 +1,11 @@
 #include "render_summary.h"
 
 #include <algorithm>
+#include <iomanip>
 #include <ostream>
 #include <sstream>
 
+#include "kernels/adaptive/adaptive_summary.h"
 #include "kernels/isa/intersect_dispatch.h"
 
 namespace wt {
@@ -59,6 +61,14 @@ void print_render_summary(std::ostream& out, const RenderSummary& m) {
             << settings.estimator.light_paths_per_pixel << " per pixel and sample), " << double(c.light_rays) / paths
             << " rays and " << double(c.camera_connections) / paths << " camera connections each, "
             << c.dropped_splats << " NaN/Inf splats\n";
+    }
+    if (m.adaptive && !m.adaptive->empty()) {
+        const AdaptiveSummary a = summarize_adaptive(*m.adaptive);
+        out << "  adaptive         threshold " << std::defaultfloat << settings.adaptive.threshold << ", min "
+            << settings.adaptive.min_spp << " spp: " << a.stopped << " of " << a.pixels << " pixels stopped ("
+            << std::fixed << std::setprecision(1) << 100.0 * double(a.stopped) / double(std::max<uint64_t>(1, a.pixels))
+            << " %), mean " << a.mean_spp << " spp\n";
+        out.precision(3);
     }
     if (result.accel == Accel::bvh) {
         const BvhStats& b = result.bvh;

@@ -20,6 +20,7 @@ struct RenderSummary {
     ProgressiveResult progressive;
     uint32_t film_spp = 0;  // samples per pixel in the image written
     std::vector<std::string> written;
+    const AdaptiveState* adaptive = nullptr;  // the film's, when it is of an adaptive render
 };
 
 void print_render_summary(std::ostream& out, const RenderSummary& summary);

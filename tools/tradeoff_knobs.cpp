@@ -19,6 +19,8 @@ void set_light_sampling(RenderSettings& s, const std::string& v) { s.estimator.l
 void set_caustics(RenderSettings& s, const std::string& v) { s.estimator.caustics = *parse_caustic_paths(v); }
 void set_light_paths(RenderSettings& s, const std::string& v) { s.estimator.light_paths_per_pixel = std::stof(v); }
 void set_clamp(RenderSettings& s, const std::string& v) { s.estimator.clamp_indirect = std::stof(v); }
+void set_adaptive_threshold(RenderSettings& s, const std::string& v) { s.adaptive.threshold = std::stof(v); }
+void set_adaptive_min_spp(RenderSettings& s, const std::string& v) { s.adaptive.min_spp = std::stoi(v); }
 
 std::string shadow_rays(const RenderSettings& s) { return std::to_string(s.shadow_rays); }
 std::string rr_start(const RenderSettings& s) { return std::to_string(s.rr_start_bounce); }
@@ -29,13 +31,15 @@ std::string sphere_test(const RenderSettings& s) { return name_of(s.accuracy.sph
 std::string sampler(const RenderSettings& s) { return name_of(s.estimator.sampler); }
 std::string light_sampling(const RenderSettings& s) { return name_of(s.estimator.light_sampling); }
 std::string caustics(const RenderSettings& s) { return name_of(s.estimator.caustics); }
-std::string printed(float v) {
-    std::ostringstream out;  // 4 -> "4", as the table writes it
+std::string shortest(float v) {
+    std::ostringstream out;  // 4 -> "4", 0.05f -> "0.05", as the table writes them
     out << v;
     return out.str();
 }
-std::string light_paths(const RenderSettings& s) { return printed(s.estimator.light_paths_per_pixel); }
-std::string clamp(const RenderSettings& s) { return printed(s.estimator.clamp_indirect); }
+std::string light_paths(const RenderSettings& s) { return shortest(s.estimator.light_paths_per_pixel); }
+std::string clamp(const RenderSettings& s) { return shortest(s.estimator.clamp_indirect); }
+std::string adaptive_threshold(const RenderSettings& s) { return shortest(s.adaptive.threshold); }
+std::string adaptive_min_spp(const RenderSettings& s) { return std::to_string(s.adaptive.min_spp); }
 
 }  // namespace
 
@@ -55,6 +59,11 @@ const std::vector<Knob>& tradeoff_knobs() {
         {"caustics", {"path", "light_tracing"}, false, set_caustics, caustics},
         // Only changes anything with light tracing: its work per sample against its noise.
         {"light_paths_per_pixel", {"0.25", "0.5", "1", "2", "4"}, false, set_light_paths, light_paths},
+        // 0 is off. Stopping on an estimate of the error can bias (a heavy-tailed pixel whose
+        // rare bright paths have not shown yet looks converged), so the floor is reported.
+        {"adaptive_threshold", {"0", "0.03", "0.06", "0.12", "0.25"}, true, set_adaptive_threshold, adaptive_threshold},
+        // Changes nothing unless the scene has an adaptive_threshold: sweep it on such a scene.
+        {"adaptive_min_spp", {"4", "16", "64"}, true, set_adaptive_min_spp, adaptive_min_spp},
     };
     return knobs;
 }

@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/accuracy.h"
+#include "core/adaptive_settings.h"
 #include "core/estimator_settings.h"
 
 namespace wt {
@@ -78,6 +79,7 @@ struct RenderSettings {
     int rr_start_bounce = 3; // first bounce at which Russian roulette may end a path
     AccuracySettings accuracy;
     EstimatorSettings estimator;
+    AdaptiveSettings adaptive;  // off by default
 };
 
 struct SceneDescription {

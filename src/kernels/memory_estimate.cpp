@@ -55,6 +55,8 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
     MemoryEstimate e;
     const RenderSettings& s = scene.settings;
     e.film = Film::bytes_needed(s.width, s.height, render_film_channels(scene, options.aovs).size());
+    // Adaptive sampling: each pixel's stop (adaptive_state.h) and the rule's flag (stopping_rule.cpp).
+    if (s.adaptive.enabled()) e.film += double(s.width) * double(s.height) * (sizeof(uint32_t) + 1);
     e.workers = options.threads > 0 ? options.threads : default_thread_count();
     if (options.integrator == Integrator::wavefront)
         e.queues_per_worker = double(WavefrontWorkspace::bytes_needed(

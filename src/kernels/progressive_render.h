@@ -33,7 +33,7 @@ struct ProgressiveOptions {
 struct PassReport {
     uint32_t pass = 0;        // 0, 1, ...
     SampleRange pass_samples; // the samples this pass added
-    uint32_t film_spp = 0;    // every pixel's sample count after the pass
+    uint32_t film_spp = 0;    // every pixel's sample count after the pass (adaptive sampling: the most any has)
     double seconds = 0.0;     // since the progressive render started
     bool last = false;        // the render's samples are all done (a time limit or a stop may end it earlier)
 };

@@ -67,22 +67,26 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
 }
 
 template <typename E>
+void render_pixel(const Scene& scene, uint32_t pixel, uint32_t sample_begin, uint32_t sample_end, Film& film,
+                  RayCounts& counts, const BvhView* bvh, const AovSelection& aovs) {
+    const bool with_aovs = aovs.needs_path_data();
+    for (uint32_t s = sample_begin; s < sample_end; ++s) {
+        FirstSurface first;
+        const glm::vec3 radiance = trace_path<E>(scene, pixel, s, counts, nullptr, bvh, with_aovs ? &first : nullptr);
+        ++counts.samples;
+        float extra[Film::max_extra_channels];
+        if (with_aovs) aov_sample_values(aovs, first, extra);
+        if (!film.add_sample(pixel, radiance, with_aovs ? extra : nullptr)) ++counts.nonfinite_samples;
+    }
+}
+
+template <typename E>
 void render_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
                  RayCounts& counts, const BvhView* bvh, const AovSelection& aovs) {
-    const bool with_aovs = aovs.needs_path_data();
-    for (int y = tile.y0; y < tile.y1; ++y) {
-        for (int x = tile.x0; x < tile.x1; ++x) {
-            const uint32_t pixel = uint32_t(y) * uint32_t(scene.settings.width) + uint32_t(x);
-            for (uint32_t s = sample_begin; s < sample_end; ++s) {
-                FirstSurface first;
-                const glm::vec3 radiance = trace_path<E>(scene, pixel, s, counts, nullptr, bvh, with_aovs ? &first : nullptr);
-                ++counts.samples;
-                float extra[Film::max_extra_channels];
-                if (with_aovs) aov_sample_values(aovs, first, extra);
-                if (!film.add_sample(pixel, radiance, with_aovs ? extra : nullptr)) ++counts.nonfinite_samples;
-            }
-        }
-    }
+    for (int y = tile.y0; y < tile.y1; ++y)
+        for (int x = tile.x0; x < tile.x1; ++x)
+            render_pixel<E>(scene, uint32_t(y) * uint32_t(scene.settings.width) + uint32_t(x), sample_begin, sample_end,
+                            film, counts, bvh, aovs);
 }
 
 }  // namespace
@@ -98,6 +102,14 @@ void render_reference_tile(const Scene& scene, const Tile& tile, uint32_t sample
                            RayCounts& counts, const BvhView* bvh, const AovSelection& aovs) {
     with_estimator(scene.settings.estimator, [&](auto estimator) {
         render_tile<decltype(estimator)>(scene, tile, sample_begin, sample_end, film, counts, bvh, aovs);
+    });
+}
+
+void render_reference_pixels(const Scene& scene, TilePixels pixels, uint32_t sample_begin, uint32_t sample_end,
+                             Film& film, RayCounts& counts, const BvhView* bvh, const AovSelection& aovs) {
+    with_estimator(scene.settings.estimator, [&](auto estimator) {
+        for (std::size_t i = 0; i < pixels.count; ++i)
+            render_pixel<decltype(estimator)>(scene, pixels.index[i], sample_begin, sample_end, film, counts, bvh, aovs);
     });
 }
 

@@ -41,5 +41,8 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
 // Samples [sample_begin, sample_end) of every pixel of the tile, with the AOVs the film has channels for.
 void render_reference_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
                            RayCounts& counts, const BvhView* bvh = nullptr, const AovSelection& aovs = {});
+// The same for some of a tile's pixels: adaptive sampling's pixels still sampled.
+void render_reference_pixels(const Scene& scene, TilePixels pixels, uint32_t sample_begin, uint32_t sample_end,
+                             Film& film, RayCounts& counts, const BvhView* bvh = nullptr, const AovSelection& aovs = {});
 
 }  // namespace wt

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "kernels/caustics/light_tracing_pass.h"
+#include "kernels/adaptive/adaptive_range.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/memory_estimate.h"
 #include "kernels/reference_integrator.h"
@@ -39,7 +40,7 @@ RenderSession::RenderSession(const Scene& scene, const RenderOptions& options)
       isa_(options.isa.value_or(best_supported_isa())),
       tiles_(make_tiles(scene.settings.width, scene.settings.height, options.tile_size)), pool_(threads_),
       kernels_(&intersect_kernels(isa_, scene.settings.accuracy)),
-      counts_(std::size_t(threads_)), workspaces_(std::size_t(threads_)) {
+      counts_(std::size_t(threads_)), workspaces_(std::size_t(threads_)), sampled_pixels_(std::size_t(threads_)) {
     accel_ = resolve_accel(options.accel, scene.primitive_count(), kernels_->width);
     if (accel_ == Accel::bvh) {
         bvh_ = build_bvh(scene, options.bvh, &pool_);
@@ -57,16 +58,42 @@ void RenderSession::render_samples(Film& film, SampleRange range, const std::fun
     if (film.extra_channels() != render_film_channels(scene_, options_.aovs))
         throw std::invalid_argument("render: the film's extra channels are not those of the AOVs requested "
                                     "(and, with light tracing, the splats)");
+    const AdaptiveSettings& adaptive = scene_.settings.adaptive;
+    if (!adaptive.enabled() && !film.adaptive().empty())
+        throw std::invalid_argument("render: the film is of a render with adaptive sampling, this scene has it off");
     if (range.end <= range.begin) return;
-    const BvhView* tree = accel_ == Accel::bvh ? &bvh_tree_ : nullptr;
-    const IntersectContext context{scene_view(scene_), kernels_, tree};
 
     const auto start = std::chrono::steady_clock::now();
+    if (adaptive.enabled())
+        render_adaptive_range(film, adaptive, range, &pool_,
+                              [&](SampleRange piece) { render_tiles(film, piece, tile_done, &film.adaptive()); });
+    else
+        render_tiles(film, range, tile_done, nullptr);
+    // The light paths of every sample of the range, whichever pixels still take samples: their
+    // splats land anywhere and are normalised by the samples traced, never by a pixel's count.
+    if (light_tracing_) {
+        const IntersectContext context{scene_view(scene_), kernels_, accel_ == Accel::bvh ? &bvh_tree_ : nullptr};
+        light_tracing_->render(film, range.begin, range.end, pool_, counts_,
+                               options_.integrator == Integrator::wavefront ? &context : nullptr);
+    }
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void RenderSession::render_tiles(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done,
+                                 const AdaptiveState* adaptive) {
+    const BvhView* tree = accel_ == Accel::bvh ? &bvh_tree_ : nullptr;
+    const IntersectContext context{scene_view(scene_), kernels_, tree};
     pool_.parallel_for(tiles_.size(), [&](std::size_t item, int worker) {
         const Tile& tile = tiles_[item];
         RayCounts& c = counts_[std::size_t(worker)];
-        if (options_.integrator == Integrator::reference) {
-            render_reference_tile(scene_, tile, range.begin, range.end, film, c, tree, options_.aovs);
+        std::vector<uint32_t>& sampled = sampled_pixels_[std::size_t(worker)];
+        if (adaptive) sampled_pixels_of_tile(*adaptive, tile, scene_.settings.width, sampled);
+        const TilePixels pixels{sampled.data(), sampled.size()};
+        if (adaptive && pixels.count == 0) {
+            // Every pixel of the tile has stopped.
+        } else if (options_.integrator == Integrator::reference) {
+            if (adaptive) render_reference_pixels(scene_, pixels, range.begin, range.end, film, c, tree, options_.aovs);
+            else render_reference_tile(scene_, tile, range.begin, range.end, film, c, tree, options_.aovs);
         } else {
             auto& ws = workspaces_[std::size_t(worker)];
             if (!ws) {
@@ -75,15 +102,15 @@ void RenderSession::render_samples(Film& film, SampleRange range, const std::fun
                 ws = std::make_unique<WavefrontWorkspace>(capacity, std::size_t(scene_.settings.shadow_rays),
                                                           options_.aovs.needs_path_data());
             }
-            render_wavefront_tile(scene_, context, tile, range.begin, range.end, options_.batch_paths, options_.aovs, *ws,
-                                  film, c);
+            if (adaptive)
+                render_wavefront_pixels(scene_, context, tile, pixels, range.begin, range.end, options_.batch_paths,
+                                        options_.aovs, *ws, film, c);
+            else
+                render_wavefront_tile(scene_, context, tile, range.begin, range.end, options_.batch_paths, options_.aovs,
+                                      *ws, film, c);
         }
         if (tile_done) tile_done(uint64_t(tile.pixel_count()) * range.size());
     });
-    if (light_tracing_)
-        light_tracing_->render(film, range.begin, range.end, pool_, counts_,
-                               options_.integrator == Integrator::wavefront ? &context : nullptr);
-    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 RenderResult RenderSession::result() const {

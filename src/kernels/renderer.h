@@ -74,6 +74,12 @@ public:
     // since the film's sums are exact, the film ends the same bits however a render is cut into
     // ranges, for any thread count, tile size and batch size. `tile_done(samples)`, if given, is called by the worker
     // that finished a tile with the number of samples it added: from several threads at once.
+    //
+    // With adaptive sampling (the scene's settings.adaptive), only pixels still sampled get the
+    // samples, the stopping rule runs at the decision points inside the range
+    // (kernels/adaptive/), and its state is in film.adaptive(): the render must start at sample
+    // 0 and each range continue where the film's ended (std::invalid_argument otherwise).
+    // `tile_done` then counts a stopped pixel's samples as done too, so progress reaches 100 %.
     void render_samples(Film& film, SampleRange range, const std::function<void(uint64_t samples)>& tile_done = {});
 
     // Counts and rendering time of every range so far.
@@ -81,6 +87,11 @@ public:
     const Scene& scene() const { return scene_; }
 
 private:
+    // One parallel pass over the tiles for `range`: every pixel, or with `adaptive` those it
+    // says are still sampled.
+    void render_tiles(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done,
+                      const AdaptiveState* adaptive);
+
     const Scene& scene_;
     RenderOptions options_;
     int threads_;
@@ -95,6 +106,7 @@ private:
     // Created by the worker that uses it, on first use, so its pages live near that core.
     std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces_;
     std::unique_ptr<LightTracingPass> light_tracing_;  // only when the scene light-traces caustics
+    std::vector<std::vector<uint32_t>> sampled_pixels_;  // per worker: a tile's pixels still sampled (adaptive)
     double seconds_ = 0.0;
 };
 

@@ -11,6 +11,7 @@
 //                samples FIRST NEXT TARGET
 //                setting NAME VALUE          (one per image setting, image_settings()' order)
 //                film WIDTH HEIGHT
+//                adaptive_state yes|no       (whether the stopping block below is there)
 //                channel NAME BYTES          (one per film channel: sum.R sum.G sum.B
 //                                             square.R square.G square.B, then the extra
 //                                             channels; BYTES is 8 or 16)
@@ -19,7 +20,12 @@
 //              2^-40 (fixed_point.h). A channel whose sums all fit in 64 bits is stored in 8,
 //              which halves the file of a typical render. Records in the film's own order make
 //              writing and reading one pass over its memory.
+//   then       with adaptive_state yes (an adaptive render, adaptive_state.h): a u32 per pixel,
+//              rows top to bottom, the sample at which the pixel stopped (at most NEXT), or
+//              4294967295 while it is still sampled. Such a render always starts at sample 0.
 //   last       XXH3-64 of every byte before it, u64
+//
+// Version 2 added the adaptive_state line and block; version 1 files are refused, by name.
 //
 // The checksum is there to catch accidents (a truncated copy, a flipped bit, a file that is
 // not ours), not tampering: a damaged file passes it with probability 2^-64, and the hash
@@ -33,7 +39,7 @@
 namespace wt::checkpoint_format {
 
 constexpr char magic[8] = {'\x89', 'W', 'T', 'C', 'K', 'P', 'T', '\n'};
-constexpr uint32_t version = 1;
+constexpr uint32_t version = 2;
 constexpr std::size_t preamble_bytes = 16;  // magic, version, header length
 constexpr std::size_t checksum_bytes = 8;
 constexpr uint32_t max_header_bytes = 1 << 16;

@@ -33,6 +33,11 @@ MergedCheckpoint merge_checkpoint_files(const std::vector<std::string>& paths) {
             sum->header, layout_of(sum->film), paths[0], part.header, layout_of(part.film), path);
         if (!differences.empty())
             throw CheckpointError(describe_differences(path + " is not a part of the same render as " + paths[0], differences));
+        // Its decisions needed all the samples before them in one film, so it has no parts.
+        for (const auto* adaptive : {&*sum, &part})
+            if (!adaptive->film.adaptive().empty())
+                throw CheckpointError((adaptive == &part ? path : paths[0]) +
+                                      " is a render with adaptive sampling, which cannot be merged with other parts");
         try {
             sum->film.add_film(part.film);
         } catch (const std::overflow_error& e) {

@@ -24,8 +24,9 @@ struct MergedCheckpoint {
 
 // Reads every file (one at a time, so memory holds two films) and adds them. Throws
 // CheckpointError naming the files when one cannot be read, does not match the first (scene,
-// settings, size, channels, version), or when two ranges overlap, and std::invalid_argument
-// for an empty list.
+// settings, size, channels, version), is of an adaptive render and not alone (its decisions
+// needed all samples before them in one film), or when two ranges overlap, and
+// std::invalid_argument for an empty list.
 MergedCheckpoint merge_checkpoint_files(const std::vector<std::string>& paths);
 
 }  // namespace wt

@@ -38,6 +38,7 @@ struct ChannelLayout {
 struct ParsedHeader {
     CheckpointHeader header;
     int width = 0, height = 0;
+    bool adaptive_state = false;  // the per-pixel stopping block follows the records
     std::vector<ChannelLayout> channels;
     uint64_t file_bytes = 0;  // what the whole file must measure
 };
@@ -142,6 +143,11 @@ ParsedHeader parse_header(std::string_view bytes, uint32_t header_length, const 
     if (!parse_u64(film[1], fmt::max_film_side, w) || !parse_u64(film[2], fmt::max_film_side, h_) || w == 0 || h_ == 0)
         lines.error("film size " + film[1] + "x" + film[2] + " is not two integers from 1 to 65536");
     p.width = int(w), p.height = int(h_);
+    const std::string adaptive = lines.next("adaptive_state", 2, "adaptive_state yes|no")[1];
+    if (adaptive != "yes" && adaptive != "no") lines.error("adaptive_state must be yes or no, got '" + adaptive + "'");
+    p.adaptive_state = adaptive == "yes";
+    if (p.adaptive_state && h.first_sample != 0)
+        lines.error("an adaptive render's checkpoint starts at sample 0, this one at " + samples[1]);
     while (!lines.at_end()) {
         if (p.channels.size() == 6 + Film::max_extra_channels)
             lines.error("more than " + std::to_string(6 + Film::max_extra_channels) + " channels");
@@ -157,7 +163,8 @@ ParsedHeader parse_header(std::string_view bytes, uint32_t header_length, const 
     const uint64_t pixels = w * h_;  // at most 2^32
     uint64_t per_pixel = 4;
     for (const ChannelLayout& c : p.channels) per_pixel += c.bytes;  // at most 4 + 22 * 16
-    p.file_bytes = fmt::preamble_bytes + header_length + pixels * per_pixel + fmt::checksum_bytes;
+    const uint64_t adaptive_block = p.adaptive_state ? pixels * 4 : 0;
+    p.file_bytes = fmt::preamble_bytes + header_length + pixels * per_pixel + adaptive_block + fmt::checksum_bytes;
     return p;
 }
 
@@ -180,6 +187,29 @@ FixedPoint get_sum(const unsigned char* p, std::size_t bytes) {
     const uint64_t low = fmt::get_u64(p);
     if (bytes == 8) return FixedPoint(int64_t(low));
     return FixedPoint((unsigned __int128)fmt::get_u64(p + 8) << 64 | low);
+}
+
+// The stopping block (checkpoint_format.h): each pixel stopped at most at NEXT, and holds no
+// more samples than it was given.
+void read_adaptive_state(const unsigned char* block, const unsigned char* data, const ParsedHeader& p, Film& film,
+                         const std::string& name) {
+    AdaptiveState& state = film.adaptive();
+    state.next_sample = p.header.next_sample;
+    state.stopped_at.resize(film.pixel_total());
+    for (std::size_t i = 0; i < state.stopped_at.size(); ++i, block += 4) {
+        const uint32_t stop = fmt::get_u32(block);
+        const std::string pixel =
+            "pixel (" + std::to_string(i % std::size_t(p.width)) + ", " + std::to_string(i / std::size_t(p.width)) + ")";
+        if (stop != AdaptiveState::still_sampling && stop > p.header.next_sample)
+            fail_at(name, uint64_t(block - data),
+                    pixel + " stopped at sample " + std::to_string(stop) + ", after the file's next sample " +
+                        std::to_string(p.header.next_sample));
+        state.stopped_at[i] = stop;
+        if (film.pixel_count(uint32_t(i)) > state.samples_of(i))
+            fail_at(name, uint64_t(block - data),
+                    pixel + " has " + std::to_string(film.pixel_count(uint32_t(i))) + " samples but stopped at sample " +
+                        std::to_string(stop));
+    }
 }
 
 }  // namespace
@@ -206,7 +236,10 @@ Checkpoint parse_checkpoint(std::string_view bytes, const std::string& name, boo
     const uint32_t version = fmt::get_u32(data + 8);
     if (version != fmt::version)
         fail_at(name, 8, "checkpoint format version " + std::to_string(version) + ", this program reads version " +
-                             std::to_string(fmt::version));
+                             std::to_string(fmt::version) +
+                             (version < fmt::version ? " (version 2 added adaptive sampling's per-pixel state): resume "
+                                                       "or merge it with the wavetrace that wrote it"
+                                                     : ""));
     const uint32_t header_length = fmt::get_u32(data + 12);
     if (header_length > fmt::max_header_bytes)
         fail_at(name, 12, "header length " + std::to_string(header_length) + " is more than the " +
@@ -254,6 +287,7 @@ Checkpoint parse_checkpoint(std::string_view bytes, const std::string& name, boo
             record += p.channels[c].bytes;
         }
     }
+    if (p.adaptive_state) read_adaptive_state(record, data, p, film, name);
     return checkpoint;
 }
 

@@ -6,7 +6,8 @@ namespace wt {
 
 namespace {
 
-// Nine significant digits tell every float apart: the clamp as it was parsed, not rounded.
+// Nine significant digits tell every float apart: the clamp and the threshold as they were
+// parsed, not rounded.
 std::string exact(float v) {
     char text[32];
     std::snprintf(text, sizeof text, "%.9g", double(v));
@@ -16,7 +17,7 @@ std::string exact(float v) {
 }  // namespace
 
 std::vector<NamedSetting> image_settings(const RenderSettings& s) {
-    return {
+    std::vector<NamedSetting> settings = {
         {"seed", std::to_string(s.seed)},
         {"shadow_rays", std::to_string(s.shadow_rays)},
         {"max_bounces", std::to_string(s.max_bounces)},
@@ -29,7 +30,12 @@ std::vector<NamedSetting> image_settings(const RenderSettings& s) {
         {"clamp_indirect", exact(s.estimator.clamp_indirect)},
         {"caustics", name_of(s.estimator.caustics)},
         {"light_paths_per_pixel", exact(s.estimator.light_paths_per_pixel)},
+        {"adaptive_threshold", exact(s.adaptive.threshold)},
     };
+    // The minimum changes nothing while adaptive sampling is off, so it does not keep such a
+    // render from being resumed with another.
+    if (s.adaptive.enabled()) settings.push_back({"adaptive_min_spp", std::to_string(s.adaptive.min_spp)});
+    return settings;
 }
 
 namespace {

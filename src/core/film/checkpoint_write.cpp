@@ -109,6 +109,12 @@ std::string header_text(const CheckpointHeader& h, const Film& film, const std::
         text << "setting " << s.name << " " << s.value << "\n";
     }
     text << "film " << film.width() << " " << film.height() << "\n";
+    const AdaptiveState& adaptive = film.adaptive();
+    if (!adaptive.empty() && (h.first_sample != 0 || adaptive.next_sample != h.next_sample))
+        throw std::invalid_argument("checkpoint: the film's adaptive state is of samples 0:" +
+                                    std::to_string(adaptive.next_sample) + ", the header says " +
+                                    std::to_string(h.first_sample) + ":" + std::to_string(h.next_sample));
+    text << "adaptive_state " << (adaptive.empty() ? "no" : "yes") << "\n";
     for (std::size_t c = 0; c < film.channels_per_pixel(); ++c) {
         const std::string name = c < 6 ? fmt::base_channels[c] : film.extra_channels()[c - 6];
         if (!is_token(name)) throw std::invalid_argument("checkpoint: channel '" + name + "' cannot be stored");
@@ -144,6 +150,7 @@ void encode(const CheckpointHeader& h, const Film& film, ChecksummedSink& out) {
             p += widths[c];
         }
     }
+    for (const uint32_t stop : film.adaptive().stopped_at) fmt::put_u32(out.reserve(4), stop);
     out.finish();
 }
 

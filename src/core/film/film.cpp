@@ -96,6 +96,9 @@ std::vector<float> Film::resolve() const {
 void Film::add_film(const Film& other) {
     if (other.width_ != width_ || other.height_ != height_ || other.extra_channels_ != extra_channels_)
         throw std::invalid_argument("films differ in size or channels");
+    if (!adaptive_.empty() || !other.adaptive_.empty())
+        throw std::invalid_argument("films of an adaptive render cannot be added: its stopping decisions need every "
+                                    "sample before them in one film");
     // Checked in full first, so a failed add leaves this film as it was.
     for (std::size_t p = 0; p < count_.size(); ++p)
         if (count_[p] > std::numeric_limits<uint32_t>::max() - other.count_[p])
@@ -111,7 +114,8 @@ void Film::add_film(const Film& other) {
 
 bool Film::operator==(const Film& other) const {
     return width_ == other.width_ && height_ == other.height_ && extra_channels_ == other.extra_channels_ &&
-           splat_samples_ == other.splat_samples_ && sums_ == other.sums_ && count_ == other.count_;
+           splat_samples_ == other.splat_samples_ && sums_ == other.sums_ && count_ == other.count_ &&
+           adaptive_ == other.adaptive_;
 }
 
 }  // namespace wt

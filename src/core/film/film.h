@@ -13,6 +13,7 @@
 // paths were traced (`splat_samples`, the same for every pixel), not by the pixel's own count,
 // and a pixel's mean is its samples' mean plus that. Those sums are exact too, so splats added
 // from many threads in any order give the same bits.
+// A film of an adaptive render also holds where each pixel stopped (adaptive_state.h).
 
 #include <cmath>
 #include <cstdint>
@@ -22,6 +23,7 @@
 #include <glm/ext/vector_double3.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/film/adaptive_state.h"
 #include "core/film/fixed_point.h"
 
 namespace wt {
@@ -88,8 +90,9 @@ public:
 
     // Adds another film of the same size and channels (the samples of a disjoint range):
     // exact, so the order films are added in does not matter. Throws std::invalid_argument on
-    // a different layout and std::overflow_error if a sum or count would overflow (this film is
-    // then unchanged).
+    // a different layout or when either film has adaptive state (an adaptive render is never
+    // split into ranges: its decisions need all samples before them), and std::overflow_error
+    // if a sum or count would overflow (this film is then unchanged).
     void add_film(const Film& other);
     bool operator==(const Film& other) const;
     bool operator!=(const Film& other) const { return !(*this == other); }
@@ -101,6 +104,10 @@ public:
     const std::vector<FixedPoint>& raw_sums() const { return sums_; }
     std::vector<uint32_t>& raw_counts() { return count_; }
     const std::vector<uint32_t>& raw_counts() const { return count_; }
+
+    // Empty unless the film is of an adaptive render; the renderer fills it.
+    AdaptiveState& adaptive() { return adaptive_; }
+    const AdaptiveState& adaptive() const { return adaptive_; }
 
     // Memory the film needs, so callers can refuse an image that cannot fit before allocating.
     static double bytes_needed(int width, int height, std::size_t extra_channels = 0) {
@@ -118,6 +125,7 @@ private:
     uint64_t splat_samples_ = 0;
     std::vector<FixedPoint> sums_;
     std::vector<uint32_t> count_;
+    AdaptiveState adaptive_;
 };
 
 }  // namespace wt

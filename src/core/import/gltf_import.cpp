@@ -1,55 +1,31 @@
 // glTF 2.0 (.gltf with its .bin files, or .glb), parsed by tinygltf (see README.md,
-// Dependencies). Every mesh primitive of mode TRIANGLES reachable from the scene's nodes becomes
-// one piece placed by its node's world transform; the accessors are bounds-checked here, since
-// a buffer too short for them would otherwise be read past its end.
+// Dependencies). Every mesh primitive of mode TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN
+// reachable from the scene's nodes becomes one piece placed by its node's world transform;
+// points and lines are skipped with a note. The accessors are read and bounds-checked by
+// gltf_accessor.h, since a buffer too short for them would otherwise be read past its end.
 
-#include <cerrno>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <unordered_set>
 
-#include <fcntl.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <tiny_gltf.h>
 
+#include "core/import/gltf_accessor.h"
 #include "core/import/gltf_materials.h"
-#include "core/regular_file.h"
+#include "core/import/gltf_version.h"
+#include "core/import/mapped_file.h"
 #include "core/import/mesh_file.h"
+#include "core/import/primitive_triangles.h"
+#include "core/regular_file.h"
 
 namespace wt {
 namespace {
-
-// The file mapped read-only, so its bytes are in memory once: the page cache's copy, which
-// tinygltf parses (and copies a .glb's binary chunk out of), rather than a heap copy as well.
-class MappedFile {
-public:
-    explicit MappedFile(const std::string& path) {
-        const int fd = ::open(path.c_str(), O_RDONLY);
-        if (fd < 0) throw MeshFileError(path + ": cannot open: " + std::strerror(errno));
-        struct stat st {};
-        if (::fstat(fd, &st) == 0) size_ = std::size_t(st.st_size);
-        if (size_ > 0) data_ = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
-        const int mmap_errno = errno;
-        ::close(fd);
-        if (data_ == MAP_FAILED) throw MeshFileError(path + ": cannot map: " + std::strerror(mmap_errno));
-    }
-    ~MappedFile() {
-        if (data_ && data_ != MAP_FAILED) ::munmap(data_, size_);
-    }
-    MappedFile(const MappedFile&) = delete;
-    MappedFile& operator=(const MappedFile&) = delete;
-    const unsigned char* data() const { return static_cast<const unsigned char*>(data_); }
-    std::size_t size() const { return size_; }
-
-private:
-    void* data_ = nullptr;
-    std::size_t size_ = 0;
-};
 
 // Textures are not rendered; leaving the image bytes undecoded also spares their memory.
 bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
@@ -67,13 +43,10 @@ glm::dmat4 local_transform(const tinygltf::Node& node) {
     return m;
 }
 
-// The bytes of one accessor's elements: element i starts at data + i * stride.
-struct AccessorBytes {
-    const unsigned char* data = nullptr;
-    std::size_t stride = 0;
-    std::size_t count = 0;
-    int component_type = 0;
-};
+const char* mode_name(int mode) {
+    static const char* const kNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP", "TRIANGLES", "TRIANGLE_STRIP", "TRIANGLE_FAN"};
+    return mode >= 0 && mode <= 6 ? kNames[mode] : "not a mode";
+}
 
 class GltfReader {
 public:
@@ -95,6 +68,10 @@ public:
                 if (!is_child[i]) roots.push_back(int(i));
         }
         for (int root : roots) visit(root, glm::dmat4(1.0), 0);
+        // Points and lines alone are not "an empty mesh": say what the file has instead.
+        if (mesh_.triangles.empty() && !first_skipped_.empty())
+            fail("no triangles: its primitives are points or lines (" + first_skipped_ +
+                 "), which have no surface to render");
         if (!all_have_normals_) mesh_.normals.clear();
         if (!all_have_normals_ && any_have_normals_)
             mesh_.notes.push_back("some primitives have no NORMAL: the file's normals are not used");
@@ -123,79 +100,60 @@ private:
         for (int child : node.children) visit(child, world, depth + 1);
     }
 
-    AccessorBytes accessor(int index, const std::string& role, int type, const std::string& where) const {
-        const std::string name = "accessor " + std::to_string(index) + " (" + role + " of " + where + ")";
-        if (index < 0 || std::size_t(index) >= model_.accessors.size()) fail(name + " does not exist");
-        const tinygltf::Accessor& a = model_.accessors[std::size_t(index)];
-        if (a.sparse.isSparse) fail(name + ": sparse accessors are not supported");
-        if (a.type != type) fail(name + ": expected type " + (type == TINYGLTF_TYPE_VEC3 ? "VEC3" : "SCALAR"));
-        if (a.bufferView < 0 || std::size_t(a.bufferView) >= model_.bufferViews.size())
-            fail(name + ": bufferView " + std::to_string(a.bufferView) + " does not exist");
-        const tinygltf::BufferView& view = model_.bufferViews[std::size_t(a.bufferView)];
-        if (view.buffer < 0 || std::size_t(view.buffer) >= model_.buffers.size())
-            fail(name + ": buffer " + std::to_string(view.buffer) + " does not exist");
-        const std::vector<unsigned char>& buffer = model_.buffers[std::size_t(view.buffer)].data;
-        const int stride = a.ByteStride(view);
-        if (stride <= 0) fail(name + ": invalid byteStride or component type");
-        const std::size_t element = std::size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType)) *
-                                                tinygltf::GetNumComponentsInType(uint32_t(a.type)));
-        // In long double, so a huge count cannot wrap the byte count around to a small one.
-        const long double needed = (long double)a.byteOffset + (long double)stride * (long double)(a.count ? a.count - 1 : 0) +
-                                   (long double)element;
-        if (a.count > 0 && needed > (long double)view.byteLength)
-            fail(name + ": " + std::to_string(a.count) + " elements need " + std::to_string((unsigned long long)needed) +
-                 " bytes of bufferView " + std::to_string(a.bufferView) + ", which has " + std::to_string(view.byteLength));
-        if (view.byteOffset + view.byteLength > buffer.size())
-            fail(name + ": bufferView " + std::to_string(a.bufferView) + " ends at byte " +
-                 std::to_string(view.byteOffset + view.byteLength) + " of buffer " + std::to_string(view.buffer) +
-                 ", which has only " + std::to_string(buffer.size()) + " bytes (the buffer is too short)");
-        return {buffer.data() + view.byteOffset + a.byteOffset, std::size_t(stride), a.count, a.componentType};
+    std::string accessor_name(int index, const std::string& role, const std::string& where) const {
+        return path_ + ": accessor " + std::to_string(index) + " (" + role + " of " + where + ")";
     }
 
-    // FLOAT VEC3 elements; positions and normals must be finite.
-    void read_vec3s(const AccessorBytes& bytes, const std::string& what, std::vector<glm::vec3>& out) const {
-        if (bytes.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT) fail(what + ": expected FLOAT components");
-        for (std::size_t i = 0; i < bytes.count; ++i) {
-            glm::vec3 v;
-            std::memcpy(&v, bytes.data + i * bytes.stride, sizeof v);
+    // FLOAT VEC3 elements, appended; positions and normals must be finite.
+    void read_vec3s(const GltfAccessor& accessor, std::vector<glm::vec3>& out) const {
+        const std::size_t first = out.size();
+        out.resize(first + accessor.count());
+        accessor.for_each([&](std::size_t i, const unsigned char* bytes) {
+            glm::vec3& v = out[first + i];
+            std::memcpy(&v, bytes, sizeof v);
             if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-                fail(what + ": element " + std::to_string(i) + " is not finite");
-            out.push_back(v);
-        }
+                throw MeshFileError(accessor.context() + ": element " + std::to_string(i) + " is not finite");
+        });
     }
 
     void read_primitive(const tinygltf::Primitive& primitive, const std::string& where, const glm::dmat4& world) {
-        if (primitive.mode != TINYGLTF_MODE_TRIANGLES) {
-            mesh_.notes.push_back("skipped " + where + ": mode " + std::to_string(primitive.mode) +
-                                  " is not TRIANGLES (4)");
+        const int mode = primitive.mode;
+        if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN)
+            fail(where + ": mode " + std::to_string(mode) + " is not a glTF primitive mode (0 to 6)");
+        if (mode < TINYGLTF_MODE_TRIANGLES) {
+            const std::string what = where + ": mode " + std::to_string(mode) + ", " + mode_name(mode);
+            if (first_skipped_.empty()) first_skipped_ = what;
+            // Once per primitive, however many nodes place its mesh.
+            if (skipped_.insert(where).second) mesh_.notes.push_back("skipped " + what + ": points and lines have no surface");
             return;
         }
         const auto position = primitive.attributes.find("POSITION");
         if (position == primitive.attributes.end()) fail(where + ": no POSITION attribute");
         const std::size_t first = mesh_.positions.size();
-        const AccessorBytes positions = accessor(position->second, "POSITION", TINYGLTF_TYPE_VEC3, where);
-        if (first + positions.count > UINT32_MAX)
+        const GltfAccessor positions(model_, position->second, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT},
+                                     accessor_name(position->second, "POSITION", where));
+        if (first + positions.count() > UINT32_MAX)
             fail(where + ": the instances come to more than 2^32 - 1 vertices (the renderer's indices are 32-bit)");
-        read_vec3s(positions, "accessor " + std::to_string(position->second) + " (POSITION of " + where + ")",
-                   mesh_.positions);
+        read_vec3s(positions, mesh_.positions);
         const auto normal = primitive.attributes.find("NORMAL");
         if (normal == primitive.attributes.end()) {
             all_have_normals_ = false;
         } else {
             any_have_normals_ = true;
-            const AccessorBytes normals = accessor(normal->second, "NORMAL", TINYGLTF_TYPE_VEC3, where);
-            if (normals.count != positions.count) fail(where + ": NORMAL and POSITION counts differ");
-            read_vec3s(normals, "accessor " + std::to_string(normal->second) + " (NORMAL of " + where + ")", mesh_.normals);
+            const GltfAccessor normals(model_, normal->second, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT},
+                                       accessor_name(normal->second, "NORMAL", where));
+            if (normals.count() != positions.count()) fail(where + ": NORMAL and POSITION counts differ");
+            read_vec3s(normals, mesh_.normals);
         }
         if (!all_have_normals_) std::vector<glm::vec3>().swap(mesh_.normals);
 
         const std::size_t first_triangle = mesh_.triangles.size();
-        if (primitive.indices < 0) {  // non-indexed: every three vertices are a triangle
-            if (positions.count % 3 != 0) fail(where + ": " + std::to_string(positions.count) + " vertices, not a multiple of 3");
-            for (std::size_t v = 0; v < positions.count; v += 3)
-                mesh_.triangles.push_back({uint32_t(first + v), uint32_t(first + v + 1), uint32_t(first + v + 2)});
+        PrimitiveTriangles triangles(PrimitiveMode(mode), mesh_.triangles);
+        if (primitive.indices < 0) {  // non-indexed: the vertices in order
+            check_vertex_count(positions.count(), mode, path_ + ": " + where + ": " + std::to_string(positions.count()) + " vertices");
+            for (std::size_t v = 0; v < positions.count(); ++v) triangles.push(uint32_t(first + v));
         } else {
-            read_indices(primitive.indices, where, first, positions.count);
+            read_indices(primitive.indices, where, mode, first, positions.count(), triangles);
         }
         if (first_triangle == mesh_.triangles.size()) fail(where + ": no triangles");
         const bool has_material = primitive.material >= 0;
@@ -204,29 +162,36 @@ private:
         any_material_ |= has_material;
         mesh_.triangle_materials.resize(mesh_.triangles.size(),
                                         has_material ? uint32_t(primitive.material) : ImportedMesh::kNoMaterial);
-        mesh_.pieces.push_back({first, positions.count, world});
+        mesh_.pieces.push_back({first, positions.count(), world});
     }
 
-    void read_indices(int index, const std::string& where, std::size_t first, std::size_t vertex_count) {
-        const AccessorBytes bytes = accessor(index, "indices", TINYGLTF_TYPE_SCALAR, where);
-        const std::string name = "accessor " + std::to_string(index) + " (indices of " + where + ")";
-        if (bytes.count % 3 != 0) fail(name + ": " + std::to_string(bytes.count) + " indices, not a multiple of 3");
-        std::array<uint32_t, 3> triangle{};
-        for (std::size_t i = 0; i < bytes.count; ++i) {
-            const unsigned char* p = bytes.data + i * bytes.stride;
+    // TRIANGLES takes them three by three; a strip or fan needs 3 to make its first triangle.
+    // `what` is the whole message so far: "FILE: accessor 3 (...): 7 indices".
+    static void check_vertex_count(std::size_t count, int mode, const std::string& what) {
+        if (mode == TINYGLTF_MODE_TRIANGLES && count % 3 != 0) throw MeshFileError(what + ", not a multiple of 3");
+        if (mode != TINYGLTF_MODE_TRIANGLES && count < 3)
+            throw MeshFileError(what + ", fewer than the 3 a " + (mode == TINYGLTF_MODE_TRIANGLE_STRIP ? "strip" : "fan") +
+                                " needs");
+    }
+
+    void read_indices(int index, const std::string& where, int mode, std::size_t first, std::size_t vertex_count,
+                      PrimitiveTriangles& triangles) const {
+        const GltfAccessor indices(model_, index, TINYGLTF_TYPE_SCALAR,
+                                   {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT},
+                                   accessor_name(index, "indices", where));
+        check_vertex_count(indices.count(), mode, indices.context() + ": " + std::to_string(indices.count()) + " indices");
+        const int type = indices.component_type();
+        indices.for_each([&](std::size_t i, const unsigned char* p) {
             uint32_t v = 0;
-            switch (bytes.component_type) {
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: v = *p; break;
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t s; std::memcpy(&s, p, 2); v = s; break; }
-            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: std::memcpy(&v, p, 4); break;
-            default: fail(name + ": indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
-            }
+            if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) v = *p;
+            else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) { uint16_t s; std::memcpy(&s, p, 2); v = s; }
+            else std::memcpy(&v, p, 4);
             if (v >= vertex_count)
-                fail(name + ": index " + std::to_string(i) + " is " + std::to_string(v) + ", out of range (" +
-                     std::to_string(vertex_count) + " vertices)");
-            triangle[i % 3] = uint32_t(first + v);
-            if (i % 3 == 2) mesh_.triangles.push_back(triangle);
-        }
+                throw MeshFileError(indices.context() + ": index " + std::to_string(i) + " is " + std::to_string(v) +
+                                    ", out of range (" + std::to_string(vertex_count) + " vertices)");
+            triangles.push(uint32_t(first + v));
+        });
     }
 
     std::string path_;
@@ -236,7 +201,21 @@ private:
     bool any_have_normals_ = false;
     uint64_t visits_ = 0;
     bool any_material_ = false;
+    std::unordered_set<std::string> skipped_;  // primitives of points or lines, noted once each
+    std::string first_skipped_;
 };
+
+// tinygltf quotes a data URI it cannot decode whole, and one may be megabytes of base64.
+std::string with_data_uris_shortened(std::string message) {
+    const auto is_base64 = [](char c) { return std::isalnum((unsigned char)c) || c == '+' || c == '/' || c == '='; };
+    for (std::size_t at = message.find("base64,"); at != std::string::npos; at = message.find("base64,", at + 1)) {
+        const std::size_t start = at + 7;
+        std::size_t end = start;
+        while (end < message.size() && is_base64(message[end])) ++end;
+        if (end - start > 32) message.replace(start + 16, end - start - 16, "... (" + std::to_string(end - start) + " characters)");
+    }
+    return message;
+}
 
 // tinygltf's own FileExists opens the file, which blocks on a FIFO: stat() does not.
 bool referenced_file_exists(const std::string& path, void*) {
@@ -276,12 +255,17 @@ ImportedMesh read_gltf_file(const std::string& path) {
         const std::string base_dir = std::filesystem::path(path).parent_path().string();
         // The content decides, not the extension: a .glb starts with the magic "glTF".
         const bool binary = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
+        if (binary) check_glb_container_version(path, file.data(), file.size());
         const bool ok =
             binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, file.data(), unsigned(file.size()), base_dir)
                    : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(file.data()),
                                                 unsigned(file.size()), base_dir);
-        if (!ok) throw MeshFileError(path + ": " + first_line(err.empty() ? warn : err));
+        if (!ok) {
+            explain_gltf_refusal(path, file.data(), file.size(), binary);
+            throw MeshFileError(path + ": " + with_data_uris_shortened(first_line(err.empty() ? warn : err)));
+        }
     }
+    check_gltf_version_and_extensions(path, model);
     ImportedMesh mesh = GltfReader(path, model).read();
     return mesh;
 }

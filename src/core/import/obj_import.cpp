@@ -1,206 +1,242 @@
-// Wavefront OBJ and its MTL materials, parsed by tinyobjloader (see README.md, Dependencies)
-// through its streaming callbacks: each "v" and "f" line reaches us as it is read, so nothing
-// but our own mesh is built, and indices are resolved and checked here. tinyobjloader does not
-// pass line numbers to callbacks, so a vertex is named by its number (the n-th "v" line) and a
-// face by its number in the file (the n-th "f" line).
+// Wavefront OBJ (the format as Paul Bourke documents it), read line by line through a fixed
+// buffer by our own reader, so that every message names the line, and a number that is not
+// one (`v abc`, `v nan`, an index past 2^63) is an error in the file's own words rather than
+// the 0 or the wrapped int tinyobjloader would hand over. MTL files are tinyobjloader's
+// (obj_materials.h). Only what becomes triangles is read: v, vn, f, mtllib and usemtl; vt,
+// o, g, s, lines, points and free-form geometry are skipped.
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <map>
 #include <unordered_map>
+#include <unordered_set>
 
-#include <tiny_obj_loader.h>
-
+#include "core/import/file_bytes.h"
 #include "core/import/mesh_file.h"
-#include "core/regular_file.h"
 #include "core/import/obj_materials.h"
 #include "core/import/polygon_fan.h"
+#include "core/import/text_words.h"
 
 namespace wt {
 namespace {
 
-// What the callbacks build. A callback cannot stop the parse, so the first problem is kept and
-// thrown once tinyobjloader returns.
-struct ObjBuilder {
-    ImportedMesh mesh;
-    std::vector<glm::vec3> file_normals;
-    std::vector<int32_t> corner_normals;  // per triangle corner, an index into file_normals or -1
-    std::vector<tinyobj::material_t> materials;
-    uint32_t material = ImportedMesh::kNoMaterial;
-    bool any_material = false;
-    std::string group;
-    uint64_t faces = 0;
-    // Positive indices may name vertices defined further down; those are checked at the end.
-    std::vector<std::pair<uint64_t, int64_t>> forward_references;  // (face, 1-based index)
-    std::string problem;
-
-    std::string face_name() const {
-        return "face " + std::to_string(faces) + (group.empty() ? "" : " (in group \"" + group + "\")");
+class ObjReader {
+public:
+    explicit ObjReader(const std::string& path) : path_(path), in_(path) {
+        base_dir_ = std::filesystem::path(path).parent_path();
     }
 
-    void fail(const std::string& what) {
-        if (problem.empty()) problem = what;
+    ImportedMesh read() {
+        std::string buffer;
+        while (in_.read_line(buffer)) {
+            // A lone "\r" ends a line too (old Mac files); "\r\n" is gone already.
+            std::string_view rest(buffer);
+            if (line_ == 0) skip_byte_order_mark(rest);
+            for (std::size_t cr; (cr = rest.find('\r')) != std::string_view::npos; rest.remove_prefix(cr + 1)) {
+                ++line_;
+                statement(rest.substr(0, cr));
+            }
+            ++line_;
+            statement(rest);
+        }
+        finish();
+        return std::move(mesh_);
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& what) const { fail_at(line_, what); }
+
+    [[noreturn]] void fail_at(uint64_t line, const std::string& what) const {
+        throw MeshFileError(path_ + ":" + std::to_string(line) + ": " + what);
+    }
+
+    void note(const std::string& what) { mesh_.notes.push_back("line " + std::to_string(line_) + ": " + what); }
+
+    // A UTF-8 mark would make the first keyword unknown, and the first "v" lost unnoticed.
+    void skip_byte_order_mark(std::string_view& first_line) const {
+        if (first_line.substr(0, 3) == "\xEF\xBB\xBF") first_line.remove_prefix(3);
+        if (first_line.substr(0, 2) == "\xFE\xFF" || first_line.substr(0, 2) == "\xFF\xFE")
+            fail_at(1, "the file is UTF-16 text (it starts with a byte order mark); OBJ is read as ASCII or UTF-8");
+    }
+
+    void statement(std::string_view line) {
+        TextWords words(line);
+        const std::string_view keyword = words.next();
+        if (keyword == "v") mesh_.positions.push_back(coordinates(words, "vertex"));
+        else if (keyword == "vn") file_normals_.push_back(coordinates(words, "normal"));
+        else if (keyword == "f") face(words);
+        else if (keyword == "vt") ++texture_coordinates_;
+        else if (keyword == "usemtl") use_material(std::string(words.rest()));
+        else if (keyword == "mtllib") read_material_libraries(words.rest());
+    }
+
+    // x y z; what follows (a vertex's w or colour) does not place it.
+    glm::vec3 coordinates(TextWords& words, const char* what) const {
+        glm::vec3 v;
+        for (int k = 0; k < 3; ++k) {
+            const std::string_view word = words.next();
+            if (word.empty()) fail(std::string("a ") + what + " needs 3 coordinates, got " + std::to_string(k));
+            double value = 0.0;
+            if (!parse_real(word, value))
+                fail(std::string(what) + " coordinate \"" + std::string(word) + "\" is not a number");
+            v[k] = float(value);
+            if (!std::isfinite(v[k]))
+                fail(std::string(what) + " coordinate \"" + std::string(word) + "\" is not finite" +
+                     (std::isfinite(value) ? " in float" : ""));
+        }
+        return v;
     }
 
     // OBJ counts from 1; a negative index counts back from the last element defined so far.
-    // Returns the 0-based index, or -1 after recording the problem.
-    int64_t resolve(int raw, std::size_t defined, const char* what) {
-        if (raw == 0) {
-            fail(face_name() + ": " + what + " index 0 (OBJ counts from 1)");
-            return -1;
+    // Returns the 0-based index, which may be past the elements defined so far.
+    int64_t resolve(std::string_view word, std::size_t defined, const char* what) const {
+        int64_t raw = 0;
+        switch (parse_integer(word, raw)) {
+        case IntegerWord::ok: break;
+        case IntegerWord::out_of_range: fail(std::string(what) + " index " + std::string(word) + " out of range");
+        case IntegerWord::not_an_integer:
+            fail(std::string(what) + " index \"" + std::string(word) + "\" is not an integer");
         }
-        const int64_t index = raw > 0 ? int64_t(raw) - 1 : int64_t(defined) + raw;
+        if (raw == 0) fail(std::string(what) + " index 0 (OBJ counts from 1)");
+        const int64_t index = raw > 0 ? raw - 1 : int64_t(defined) + raw;
         if (index < 0)
-            fail(face_name() + ": " + what + " index " + std::to_string(raw) + " reaches before the first (" +
+            fail(std::string(what) + " index " + std::to_string(raw) + " reaches before the first (" +
                  std::to_string(defined) + " defined so far)");
         return index;
     }
 
-    void face(const tinyobj::index_t* corners, int count) {
-        ++faces;
-        if (!problem.empty()) return;
-        if (count < 3) return fail(face_name() + ": a face needs at least 3 vertices, got " + std::to_string(count));
+    // Corners v, v/vt, v/vt/vn or v//vn; the texture index is checked as a number only.
+    void face(TextWords& words) {
         polygon_.clear();
         polygon_normals_.clear();
-        for (int k = 0; k < count; ++k) {
-            const int64_t v = resolve(corners[k].vertex_index, mesh.positions.size(), "vertex");
-            if (v < 0) return;
-            if (uint64_t(v) >= mesh.positions.size()) forward_references.push_back({faces, v + 1});
-            polygon_.push_back(uint32_t(v));
-            int64_t n = -1;
-            if (corners[k].normal_index != 0) {
-                n = resolve(corners[k].normal_index, file_normals.size(), "normal");
-                if (n < 0) return;
-                if (uint64_t(n) >= file_normals.size())
-                    return fail(face_name() + ": normal index " + std::to_string(corners[k].normal_index) +
-                                " out of range (" + std::to_string(file_normals.size()) + " normals defined so far)");
+        for (std::string_view corner = words.next(); !corner.empty(); corner = words.next()) {
+            const std::size_t slash = corner.find('/');
+            const std::string_view v = corner.substr(0, slash);
+            std::string_view vt, vn;
+            if (slash != std::string_view::npos) {
+                const std::string_view after = corner.substr(slash + 1);
+                const std::size_t second = after.find('/');
+                vt = after.substr(0, second);
+                if (second != std::string_view::npos) {
+                    vn = after.substr(second + 1);
+                    if (vn.empty() || vn.find('/') != std::string_view::npos)
+                        fail("face corner \"" + std::string(corner) + "\" is not v, v/vt, v/vt/vn or v//vn");
+                }
             }
-            polygon_normals_.push_back(int32_t(n));
+            const int64_t vertex = resolve(v, mesh_.positions.size(), "vertex");
+            // Positive indices may name vertices defined further down; checked at the end.
+            if (uint64_t(vertex) >= mesh_.positions.size()) forward_references_.push_back({line_, vertex + 1});
+            if (!vt.empty()) resolve(vt, texture_coordinates_, "texture coordinate");
+            int32_t normal = -1;
+            if (!vn.empty()) {
+                const int64_t n = resolve(vn, file_normals_.size(), "normal");
+                if (uint64_t(n) >= file_normals_.size())
+                    fail("normal index " + std::string(vn) + " out of range (" + std::to_string(file_normals_.size()) +
+                         " normals defined so far)");
+                normal = int32_t(n);
+            }
+            polygon_.push_back(uint32_t(vertex));
+            polygon_normals_.push_back(normal);
         }
+        if (polygon_.size() < 3) fail("a face needs at least 3 vertices, got " + std::to_string(polygon_.size()));
         for (std::size_t k = 1; k + 1 < polygon_normals_.size(); ++k)
-            corner_normals.insert(corner_normals.end(), {polygon_normals_[0], polygon_normals_[k], polygon_normals_[k + 1]});
-        append_polygon_fan(polygon_, mesh.triangles);
-        mesh.triangle_materials.resize(mesh.triangles.size(), material);
+            corner_normals_.insert(corner_normals_.end(), {polygon_normals_[0], polygon_normals_[k], polygon_normals_[k + 1]});
+        append_polygon_fan(polygon_, mesh_.triangles);
+        mesh_.triangle_materials.resize(mesh_.triangles.size(), material_);
     }
 
-private:
+    void use_material(const std::string& name) {
+        const auto it = material_ids_.find(name);
+        material_ = it == material_ids_.end() ? ImportedMesh::kNoMaterial : uint32_t(it->second);
+        any_material_ |= it != material_ids_.end();
+        if (it == material_ids_.end() && unknown_materials_.insert(name).second)
+            note("usemtl " + name + ": no such material in the .mtl files");
+    }
+
+    // File names separated by blanks; "\ " is a blank inside a name. Each file is read once.
+    void read_material_libraries(std::string_view names) {
+        std::vector<std::string> files(1);
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            if (names[i] == '\\' && i + 1 < names.size()) files.back() += names[++i];
+            else if (!is_blank(names[i])) files.back() += names[i];
+            else if (!files.back().empty()) files.emplace_back();
+        }
+        if (files.back().empty()) files.pop_back();
+        if (files.empty()) note("mtllib names no file");
+        for (const std::string& file : files) {
+            if (!material_files_.insert(file).second) continue;
+            const std::string problem = read_mtl_file((base_dir_ / file).string(), materials_, material_ids_);
+            if (!problem.empty()) note("mtllib " + file + ": not read (" + problem + "), its materials are missing");
+        }
+    }
+
+    void finish() {
+        for (const auto& [line, index] : forward_references_)
+            if (uint64_t(index) > mesh_.positions.size())
+                fail_at(line, "vertex index " + std::to_string(index) + " out of range (the file has " +
+                                  std::to_string(mesh_.positions.size()) + " vertices)");
+        // File normals only if every face corner names one: a mesh half smooth and half flat
+        // would have no consistent shading normal to give its flat half.
+        const bool every_corner_has_normal =
+            !file_normals_.empty() && std::find(corner_normals_.begin(), corner_normals_.end(), -1) == corner_normals_.end();
+        if (!file_normals_.empty() && !every_corner_has_normal)
+            mesh_.notes.push_back("some faces name no vertex normal (\"vn\"): the file's normals are not used");
+        if (every_corner_has_normal) split_vertices_by_normal();
+        std::vector<int32_t>().swap(corner_normals_);
+
+        if (!any_material_) mesh_.triangle_materials.clear();
+        for (const tinyobj::material_t& m : materials_) mesh_.materials.push_back(map_obj_material(m));
+        mesh_.pieces.push_back({0, mesh_.positions.size(), glm::dmat4(1.0)});
+    }
+
+    // One output vertex per distinct (position, normal) pair a face corner names. A position
+    // keeps its index and the file's order when its corners agree on the normal (the common
+    // case), and is copied to the end once per other normal it is given.
+    void split_vertices_by_normal() {
+        std::vector<int32_t> normal_of(mesh_.positions.size(), -1);
+        std::unordered_map<uint64_t, uint32_t> copies;
+        mesh_.normals.assign(mesh_.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+        for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+            for (std::size_t k = 0; k < 3; ++k) {
+                uint32_t& v = mesh_.triangles[t][k];
+                const int32_t n = corner_normals_[3 * t + k];
+                if (normal_of[v] < 0 || normal_of[v] == n) {
+                    normal_of[v] = n;
+                    mesh_.normals[v] = file_normals_[std::size_t(n)];
+                    continue;
+                }
+                const auto [it, inserted] =
+                    copies.try_emplace((uint64_t(v) << 32) | uint32_t(n), uint32_t(mesh_.positions.size()));
+                if (inserted) {
+                    mesh_.positions.push_back(mesh_.positions[v]);
+                    mesh_.normals.push_back(file_normals_[std::size_t(n)]);
+                }
+                v = it->second;
+            }
+        }
+    }
+
+    std::string path_;
+    std::filesystem::path base_dir_;
+    FileBytes in_;
+    uint64_t line_ = 0;
+    ImportedMesh mesh_;
+    std::vector<glm::vec3> file_normals_;
+    std::size_t texture_coordinates_ = 0;  // counted, for negative indices; not read
+    std::vector<int32_t> corner_normals_;  // per triangle corner, an index into file_normals_ or -1
+    std::vector<std::pair<uint64_t, int64_t>> forward_references_;  // (line, 1-based index)
     std::vector<uint32_t> polygon_;
     std::vector<int32_t> polygon_normals_;
-};
-
-tinyobj::callback_t obj_callbacks() {
-    tinyobj::callback_t cb;
-    cb.vertex_cb = [](void* user, float x, float y, float z, float) {
-        ObjBuilder& b = *static_cast<ObjBuilder*>(user);
-        b.mesh.positions.push_back({x, y, z});
-        if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
-            b.fail("vertex " + std::to_string(b.mesh.positions.size()) + " (the " + std::to_string(b.mesh.positions.size()) +
-                   "th \"v\" line) is not finite");
-    };
-    cb.normal_cb = [](void* user, float x, float y, float z) {
-        ObjBuilder& b = *static_cast<ObjBuilder*>(user);
-        b.file_normals.push_back({x, y, z});
-        if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
-            b.fail("normal " + std::to_string(b.file_normals.size()) + " (\"vn\") is not finite");
-    };
-    cb.index_cb = [](void* user, tinyobj::index_t* corners, int count) { static_cast<ObjBuilder*>(user)->face(corners, count); };
-    cb.usemtl_cb = [](void* user, const char* name, int id) {
-        ObjBuilder& b = *static_cast<ObjBuilder*>(user);
-        b.material = id >= 0 ? uint32_t(id) : ImportedMesh::kNoMaterial;
-        b.any_material |= id >= 0;
-        if (id < 0) b.mesh.notes.push_back("usemtl " + std::string(name) + ": no such material in the .mtl files");
-    };
-    cb.mtllib_cb = [](void* user, const tinyobj::material_t* materials, int count) {
-        static_cast<ObjBuilder*>(user)->materials.assign(materials, materials + count);
-    };
-    cb.group_cb = [](void* user, const char** names, int count) {
-        static_cast<ObjBuilder*>(user)->group = count > 0 ? names[0] : "";
-    };
-    cb.object_cb = [](void* user, const char* name) { static_cast<ObjBuilder*>(user)->group = name; };
-    return cb;
-}
-
-// One output vertex per distinct (position, normal) pair a face corner names. A position keeps
-// its index and the file's order when its corners agree on the normal (the common case), and
-// is copied to the end once per other normal it is given.
-void split_vertices_by_normal(ObjBuilder& b) {
-    ImportedMesh& mesh = b.mesh;
-    std::vector<int32_t> normal_of(mesh.positions.size(), -1);
-    std::unordered_map<uint64_t, uint32_t> copies;
-    mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-        for (std::size_t k = 0; k < 3; ++k) {
-            uint32_t& v = mesh.triangles[t][k];
-            const int32_t n = b.corner_normals[3 * t + k];
-            if (normal_of[v] < 0 || normal_of[v] == n) {
-                normal_of[v] = n;
-                mesh.normals[v] = b.file_normals[std::size_t(n)];
-                continue;
-            }
-            const auto [it, inserted] = copies.try_emplace((uint64_t(v) << 32) | uint32_t(n), uint32_t(mesh.positions.size()));
-            if (inserted) {
-                mesh.positions.push_back(mesh.positions[v]);
-                mesh.normals.push_back(b.file_normals[std::size_t(n)]);
-            }
-            v = it->second;
-        }
-    }
-}
-
-// tinyobjloader's MTL reader, for regular files within the mesh-file limit only: `mtllib
-// /dev/zero` would otherwise read one endless line.
-class RegularMaterialFileReader : public tinyobj::MaterialReader {
-public:
-    explicit RegularMaterialFileReader(std::string dir) : dir_(dir), reader_(std::move(dir)) {}
-    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* ids,
-                    std::string* warn, std::string* err) override {
-        try {
-            open_regular_file(dir_ + name, kMaxMeshFileBytes);
-        } catch (const InputFileError& e) {
-            if (warn) *warn += "Failed to load material file(s). " + std::string(e.what()) + "\n";
-            return false;
-        }
-        return reader_(name, materials, ids, warn, err);
-    }
-
-private:
-    std::string dir_;
-    tinyobj::MaterialFileReader reader_;
+    std::vector<tinyobj::material_t> materials_;
+    std::map<std::string, int> material_ids_;
+    std::unordered_set<std::string> material_files_, unknown_materials_;
+    uint32_t material_ = ImportedMesh::kNoMaterial;
+    bool any_material_ = false;
 };
 
 }  // namespace
 
-ImportedMesh read_obj_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw MeshFileError(path + ": cannot open");
-    const std::string base_dir = std::filesystem::path(path).parent_path().string();
-    RegularMaterialFileReader mtl_reader(base_dir.empty() ? std::string("./") : base_dir + "/");
-    ObjBuilder b;
-    std::string warn, err;
-    const bool ok = tinyobj::LoadObjWithCallback(in, obj_callbacks(), &b, &mtl_reader, &warn, &err);
-    if (!ok || !err.empty()) throw MeshFileError(path + ": " + first_line(err.empty() ? warn : err));
-    if (in.bad()) throw MeshFileError(path + ": read error");
-    if (!b.problem.empty()) throw MeshFileError(path + ": " + b.problem);
-    for (const auto& [face, index] : b.forward_references)
-        if (uint64_t(index) > b.mesh.positions.size())
-            throw MeshFileError(path + ": face " + std::to_string(face) + ": vertex index " + std::to_string(index) +
-                                " out of range (the file has " + std::to_string(b.mesh.positions.size()) + " vertices)");
-    if (warn.find("Failed to load material file") != std::string::npos) b.mesh.notes.push_back(first_line(warn));
-
-    // File normals only if every face corner names one: a mesh half smooth and half flat would
-    // have no consistent shading normal to give its flat half.
-    const bool every_corner_has_normal =
-        !b.file_normals.empty() && std::find(b.corner_normals.begin(), b.corner_normals.end(), -1) == b.corner_normals.end();
-    if (!b.file_normals.empty() && !every_corner_has_normal)
-        b.mesh.notes.push_back("some faces name no vertex normal (\"vn\"): the file's normals are not used");
-    if (every_corner_has_normal) split_vertices_by_normal(b);
-    std::vector<int32_t>().swap(b.corner_normals);
-
-    if (!b.any_material) b.mesh.triangle_materials.clear();
-    for (const tinyobj::material_t& m : b.materials) b.mesh.materials.push_back(map_obj_material(m));
-    b.mesh.pieces.push_back({0, b.mesh.positions.size(), glm::dmat4(1.0)});
-    return std::move(b.mesh);
-}
+ImportedMesh read_obj_file(const std::string& path) { return ObjReader(path).read(); }
 
 }  // namespace wt

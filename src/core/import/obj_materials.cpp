@@ -1,8 +1,24 @@
 #include "core/import/obj_materials.h"
 
+#include <sstream>
+
 #include "core/import/material_mapping.h"
+#include "core/regular_file.h"
 
 namespace wt {
+
+std::string read_mtl_file(const std::string& path, std::vector<tinyobj::material_t>& materials,
+                          std::map<std::string, int>& ids) {
+    std::istringstream text;
+    try {
+        text.str(read_regular_file(path, kMaxSceneFileBytes));
+    } catch (const InputFileError& e) {
+        return e.what();
+    }
+    std::string warn, err;  // tinyobjloader's warnings are about values it chose between
+    tinyobj::LoadMtl(&ids, &materials, &text, &warn, &err);
+    return "";
+}
 
 ImportedMaterial map_obj_material(const tinyobj::material_t& m) {
     ImportedMaterial out;

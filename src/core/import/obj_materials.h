@@ -1,5 +1,9 @@
 #pragma once
-// MTL materials (as tinyobjloader reads them) to ours.
+// MTL files, read by tinyobjloader, and their materials mapped to ours.
+
+#include <map>
+#include <string>
+#include <vector>
 
 #include <tiny_obj_loader.h>
 
@@ -11,5 +15,12 @@ namespace wt {
 // (refraction): glass with ior Ni. Otherwise Lambertian with albedo Kd. Ke is the emission.
 // Texture maps are recorded as not mapped.
 ImportedMaterial map_obj_material(const tinyobj::material_t& m);
+
+// Appends the materials of the MTL file at `path` to `materials`, and their names to `ids` (a
+// name defined twice keeps its first index). The file is read whole, so only a regular file
+// within the scene-file limit (`mtllib /dev/zero` would otherwise be read without end).
+// Returns "" or, if the file cannot be read, why ("PATH: cannot open: ...").
+std::string read_mtl_file(const std::string& path, std::vector<tinyobj::material_t>& materials,
+                          std::map<std::string, int>& ids);
 
 }  // namespace wt

@@ -74,6 +74,7 @@ public:
     ImportedMesh read() {
         read_header();
         ImportedMesh mesh;
+        if (skipped_header_lines_ > 0) mesh.notes.push_back(skipped_header_note());
         mesh.pieces.push_back({});
         for (const PlyElement& element : header_.elements) read_element(element, mesh);
         mesh.pieces[0].vertex_count = mesh.positions.size();
@@ -143,7 +144,9 @@ private:
                 if (p.name.empty()) fail("property without a name: \"" + line + "\"");
                 header_.elements.back().properties.push_back(p);
             } else {
-                fail("unknown header keyword \"" + keyword + "\"");
+                // Not PLY (Blender 2.4's "Created by ..."): skipped, as assimp and Blender's own
+                // reader do, and said in a note, in case it was meant as a line of the layout.
+                if (skipped_header_lines_++ == 0) first_skipped_ = {line_, line};
             }
         }
         if (!have_format) fail("the header has no format line");
@@ -151,6 +154,14 @@ private:
         for (const PlyElement& e : header_.elements)
             if (e.name == "vertex") vertex_count_ = e.count;
         if (vertex_count_ > UINT32_MAX) fail("more than 2^32 - 1 vertices");
+    }
+
+    std::string skipped_header_note() const {
+        std::string text = first_skipped_.second;
+        if (text.size() > 80) text = text.substr(0, 77) + "...";
+        const std::string where = "line " + std::to_string(first_skipped_.first) + ": \"" + text + "\"";
+        if (skipped_header_lines_ == 1) return "skipped a header line that is not PLY, " + where;
+        return "skipped " + std::to_string(skipped_header_lines_) + " header lines that are not PLY, the first " + where;
     }
 
     // One value of the current record, as double (exact for every PLY integer type).
@@ -282,6 +293,8 @@ private:
     FileBytes in_;
     PlyHeader header_;
     bool in_header_ = true;
+    uint64_t skipped_header_lines_ = 0;
+    std::pair<uint64_t, std::string> first_skipped_;  // its line number and text
     bool has_normals_ = false;
     uint64_t vertex_count_ = 0;
     uint64_t line_ = 0;

@@ -60,7 +60,7 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     in.expect_object(j, path);
     in.check_keys(j, path, {"width", "height", "spp", "shadow_rays", "seed", "max_bounces", "rr_start_bounce",
                             "triangle_test", "sphere_test", "fresnel", "sampler", "light_sampling", "clamp_indirect",
-                            "caustics", "light_paths_per_pixel"});
+                            "caustics", "light_paths_per_pixel", "adaptive_threshold", "adaptive_min_spp"});
     RenderSettings s;
     const auto read_int = [&](const char* key, int& field, uint64_t lo, uint64_t hi) {
         if (const Json* v = in.optional(j, key)) field = int(in.integer(*v, member_path(path, key), lo, hi));
@@ -71,6 +71,7 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     read_int("shadow_rays", s.shadow_rays, 1, 1024);
     read_int("max_bounces", s.max_bounces, 1, 1024);
     read_int("rr_start_bounce", s.rr_start_bounce, 0, INT32_MAX);
+    read_int("adaptive_min_spp", s.adaptive.min_spp, adaptive_min_spp_lowest, uint64_t(1) << 20);
     if (const Json* seed = in.optional(j, "seed")) s.seed = in.integer(*seed, member_path(path, "seed"), 0, UINT64_MAX);
     const auto read_choice = [&](const char* key, auto& field, auto parse, const char* allowed) {
         const Json* v = in.optional(j, key);
@@ -97,6 +98,12 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
         s.estimator.clamp_indirect = in.number(*clamp, clamp_path);
         if (!(s.estimator.clamp_indirect >= 0.0f))
             in.fail(clamp_path, "must be non-negative (0 turns the clamp off), got " + describe(*clamp));
+    }
+    if (const Json* threshold = in.optional(j, "adaptive_threshold")) {
+        const std::string threshold_path = member_path(path, "adaptive_threshold");
+        s.adaptive.threshold = in.number(*threshold, threshold_path);
+        if (!(s.adaptive.threshold >= 0.0f))
+            in.fail(threshold_path, "must be non-negative (0 turns adaptive sampling off), got " + describe(*threshold));
     }
     return s;
 }

@@ -18,6 +18,9 @@ namespace wt {
 // so each pixel's samples sit in the path table in ascending order.
 void generate_camera_rays(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end,
                           PathTable& paths, RayQueue& rays);
+// The same for some of a tile's pixels only (adaptive sampling's pixels still sampled).
+void generate_camera_rays(const Scene& scene, TilePixels pixels, uint32_t sample_begin, uint32_t sample_end,
+                          PathTable& paths, RayQueue& rays);
 
 // What the intersect and shadow stages trace against, and with which kernels: the BVH when
 // the render has one, else the flat primitive lists.

@@ -6,14 +6,18 @@
 
 namespace wt {
 
-void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, uint32_t sample_begin,
-                           uint32_t sample_end, std::size_t batch_paths, const AovSelection& aovs,
-                           WavefrontWorkspace& ws, Film& film, RayCounts& counts) {
+namespace {
+
+// Batches of `step` samples of the tile's pixels: `generate(begin, end)` fills the queue with
+// their camera rays, sample-major.
+template <typename Generate>
+void render_batches(const Scene& scene, const IntersectContext& context, uint32_t sample_begin, uint32_t sample_end,
+                    uint32_t step, const AovSelection& aovs, WavefrontWorkspace& ws, Film& film, RayCounts& counts,
+                    Generate&& generate) {
     const bool with_aovs = aovs.needs_path_data();
-    const uint32_t step = samples_per_batch(tile, batch_paths, sample_end - sample_begin);
     for (uint32_t begin = sample_begin; begin < sample_end; begin += step) {
         const uint32_t end = std::min(sample_end, begin + step);
-        generate_camera_rays(scene, tile, begin, end, ws.paths, ws.rays);
+        generate(begin, end);
         counts.camera_rays += ws.rays.count;
         const std::size_t batch_size = ws.rays.count;
 
@@ -35,6 +39,30 @@ void render_wavefront_tile(const Scene& scene, const IntersectContext& context, 
                 ++counts.nonfinite_samples;
         }
     }
+}
+
+}  // namespace
+
+void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, uint32_t sample_begin,
+                           uint32_t sample_end, std::size_t batch_paths, const AovSelection& aovs,
+                           WavefrontWorkspace& ws, Film& film, RayCounts& counts) {
+    const uint32_t step = samples_per_batch(tile, batch_paths, sample_end - sample_begin);
+    render_batches(scene, context, sample_begin, sample_end, step, aovs, ws, film, counts, [&](uint32_t b, uint32_t e) {
+        generate_camera_rays(scene, tile, b, e, ws.paths, ws.rays);
+    });
+}
+
+void render_wavefront_pixels(const Scene& scene, const IntersectContext& context, const Tile& tile, TilePixels pixels,
+                             uint32_t sample_begin, uint32_t sample_end, std::size_t batch_paths,
+                             const AovSelection& aovs, WavefrontWorkspace& ws, Film& film, RayCounts& counts) {
+    // The whole tile's batch, shared by fewer pixels: more of their samples per batch, and
+    // never more paths than the workspace was sized for (memory_estimate.h).
+    const uint32_t samples = sample_end - sample_begin;
+    const std::size_t budget = std::size_t(tile.pixel_count()) * samples_per_batch(tile, batch_paths, samples);
+    const uint32_t step = uint32_t(std::min<std::size_t>(samples, std::max<std::size_t>(1, budget / pixels.count)));
+    render_batches(scene, context, sample_begin, sample_end, step, aovs, ws, film, counts, [&](uint32_t b, uint32_t e) {
+        generate_camera_rays(scene, pixels, b, e, ws.paths, ws.rays);
+    });
 }
 
 }  // namespace wt

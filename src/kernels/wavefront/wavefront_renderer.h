@@ -25,4 +25,9 @@ void render_wavefront_tile(const Scene& scene, const IntersectContext& context, 
                            uint32_t sample_end, std::size_t batch_paths, const AovSelection& aovs,
                            WavefrontWorkspace& workspace, Film& film, RayCounts& counts);
 
+// The same for some of the tile's pixels (at least one): adaptive sampling's pixels still sampled.
+void render_wavefront_pixels(const Scene& scene, const IntersectContext& context, const Tile& tile, TilePixels pixels,
+                             uint32_t sample_begin, uint32_t sample_end, std::size_t batch_paths,
+                             const AovSelection& aovs, WavefrontWorkspace& workspace, Film& film, RayCounts& counts);
+
 }  // namespace wt
