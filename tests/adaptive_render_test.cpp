@@ -81,7 +81,7 @@ AdaptiveRender render_adaptive(const SceneDescription& d, SampleRange range, int
     options.tile_size = tile_size;
     options.batch_paths = batch_paths;
     options.aovs = aovs;
-    AdaptiveRender out{Film(d.settings.width, d.settings.height, aov_film_channels(aovs)), {}};
+    AdaptiveRender out{test::film_for(scene, aovs), {}};
     RenderSession session(scene, options);
     session.render_samples(out.film, range);
     out.result = session.result();
@@ -188,7 +188,7 @@ TEST(AdaptiveDeterminism, OneRangeOrManyPiecesGiveTheSameBits) {
         RenderOptions options;
         options.threads = 3;
         RenderSession session(scene, options);
-        Film film(d.settings.width, d.settings.height);
+        Film film = test::film_for(scene);
         for (std::size_t i = 0; i + 1 < cut.size(); ++i) session.render_samples(film, {cut[i], cut[i + 1]});
         EXPECT_TRUE(film == whole) << "cut at " << cut[1] << ", " << cut[2] << ", ...";
     }
@@ -239,11 +239,11 @@ TEST(AdaptiveSampling, RangesThatCannotBeExactAreRefused) {
         return std::string("accepted");
     };
     // A part of a split render lacks the samples before it.
-    Film part(24, 18);
+    Film part = test::film_for(scene);
     EXPECT_NE(message(part, {16, 32}).find("must start at sample 0"), std::string::npos);
     EXPECT_TRUE(part.adaptive().empty()) << "nothing rendered";
     // A film must continue where it ended.
-    Film film(24, 18);
+    Film film = test::film_for(scene);
     session.render_samples(film, {0, 10});
     EXPECT_NE(message(film, {12, 20}).find("holds samples up to 10"), std::string::npos);
     // Adding films of an adaptive render (a merge, MPI) would mix decisions.

@@ -80,7 +80,7 @@ TEST(MemoryEstimate, ARenderThatCannotFitIsRefusedNamingTheOptionToChange) {
     // Adaptive sampling adds each pixel's stop and the rule's flag: 5 bytes.
     wt::Scene adaptive = scene;
     adaptive.settings.adaptive.threshold = 0.1f;
-    EXPECT_EQ(wt::estimate_render_memory(adaptive, options).film, wt::Film::bytes_needed(800, 800) + 800.0 * 800.0 * 5);
+    EXPECT_EQ(wt::estimate_render_memory(adaptive, options).film, wt::Film::bytes_needed(800, 800, 3) + 800.0 * 800.0 * 5);
 }
 
 TEST(MemoryEstimate, TheBvhIsCountedOnlyWhenOneIsBuilt) {

@@ -28,7 +28,10 @@ inline double pixel_error(const Film& film, uint32_t pixel) {
     const uint32_t n = film.pixel_count(pixel);
     if (n < 2) return std::numeric_limits<double>::infinity();  // no variance yet: never converged
     const glm::dvec3 variance = film.pixel_sample_variance(pixel);
-    const glm::dvec3 mean = film.pixel_mean(pixel);
+    // The pixel's own samples, as the variance is: with light tracing the splats' part of the
+    // mean depends on whether a range's light paths were traced before this decision or after,
+    // which must not change a decision.
+    const glm::dvec3 mean = film.pixel_sum(pixel) / double(n);
     const double standard_error =
         std::sqrt(variance.x / n) + std::sqrt(variance.y / n) + std::sqrt(variance.z / n);
     const double intensity = std::max(0.0, mean.x + mean.y + mean.z);
