@@ -145,6 +145,7 @@ RoomOracle::RoomOracle(const Room& room, int max_bounces, const OracleSettings& 
         throw std::invalid_argument("oracle: the coarse patches must be larger than the fine ones");
     coarse_ = std::make_unique<RadiositySolution>(room, cells_for(room, settings.coarse_patch), max_bounces);
     fine_ = std::make_unique<RadiositySolution>(room, cells_for(room, settings.fine_patch), max_bounces);
+    rough_ = std::make_unique<RadiositySolution>(room, cells_for(room, settings.quadrature_patch), max_bounces);
 }
 
 RoomOracle::~RoomOracle() = default;
@@ -156,6 +157,7 @@ PixelPrediction RoomOracle::predict_pixel(const PinholeCamera& camera, int pixel
     auto direct = [&](int wall, const Vec3& p) { return coarse_->direct_radiance(wall, p); };
     auto indirect_coarse = [&](int wall, const Vec3& p) { return coarse_->indirect_radiance(wall, p); };
     auto indirect_fine = [&](int wall, const Vec3& p) { return fine_->indirect_radiance(wall, p); };
+    auto indirect_rough = [&](int wall, const Vec3& p) { return rough_->indirect_radiance(wall, p); };
     // Direct light: exact but for the quadrature, and cheap (one rectangle per point).
     const Rgb direct4 = pixel_mean(pixel, room_, camera, 4, direct), direct3 = pixel_mean(pixel, room_, camera, 3, direct);
     // Indirect light, smooth over a pixel: the step to the fine solution from the pixel centres
@@ -164,12 +166,14 @@ PixelPrediction RoomOracle::predict_pixel(const PinholeCamera& camera, int pixel
     const Rgb coarse2 = pixel_mean(pixel, room_, camera, 2, indirect_coarse);
     const Rgb coarse1 = pixel_mean(pixel, room_, camera, 1, indirect_coarse);
     const Rgb fine1 = pixel_mean(pixel, room_, camera, 1, indirect_fine);
+    const Rgb rough3 = pixel_mean(pixel, room_, camera, 3, indirect_rough);
+    const Rgb rough2 = pixel_mean(pixel, room_, camera, 2, indirect_rough);
     PixelPrediction p;
     for (int c = 0; c < 3; ++c) {
         const double step = fine1[c] - coarse1[c];
         p.radiance[c] = direct4[c] + coarse2[c] + (1.0 + richardson.middle) * step;
         p.error_bound[c] =
-            std::fabs(direct4[c] - direct3[c]) + std::fabs(coarse2[c] - coarse1[c]) + richardson.half_width * std::fabs(step);
+            std::fabs(direct4[c] - direct3[c]) + std::fabs(rough3[c] - rough2[c]) + richardson.half_width * std::fabs(step);
     }
     return p;
 }

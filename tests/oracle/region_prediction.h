@@ -27,6 +27,10 @@ struct OracleSettings {
     // edges into whole numbers of patches.
     double coarse_patch = 1.0 / 16.0;
     double fine_patch = 1.0 / 24.0;
+    // A third, rougher solution, only for bounding the pixel quadrature of the indirect light
+    // (how much the radiance bends across a pixel, which a 1 % error in the radiance hardly
+    // changes), where the patch count multiplies the cost of every quadrature point.
+    double quadrature_patch = 1.0 / 8.0;
     int cells_per_side = 2;
     // Near a concave edge the radiance bends sharply (its gradient grows like the log of the
     // distance): a pixel's quadrature and the patches' discretisation are at their worst there.
@@ -60,9 +64,10 @@ class RadiositySolution;
 //
 // A pixel's error bound adds three parts. Direct light (from the light, in closed form): the
 // 4 x 4 Gauss-Legendre rule over the pixel, bounded by its distance from the 3 x 3 rule.
-// Indirect light: the 2 x 2 rule on the coarse solution, bounded by its distance from the pixel
-// centre; and the discretisation: its error behaves as C h^p, so the exact value is
-// fine + (fine - coarse) / (s^p - 1), s = h_coarse / h_fine. For any order p in [kLowestOrder,
+// Indirect light: the 2 x 2 rule on the coarse solution, bounded by the distance between the
+// 2 x 2 and 3 x 3 rules on the quadrature solution; and the discretisation: its error behaves as
+// C h^p, so the exact value is fine + (fine - coarse) / (s^p - 1), s = h_coarse / h_fine (the
+// step from the pixel centres). For any order p in [kLowestOrder,
 // kHighestOrder] (the `long` test measures it from three resolutions) that lies between the
 // values at the two ends; the prediction is their midpoint and the bound their half-distance.
 class RoomOracle {
@@ -82,7 +87,7 @@ public:
 private:
     Room room_;
     OracleSettings settings_;
-    std::unique_ptr<RadiositySolution> coarse_, fine_;
+    std::unique_ptr<RadiositySolution> coarse_, fine_, rough_;
 };
 
 // The final gather's order of convergence, measured over this room's regions at h = 1/8 .. 1/32:
