@@ -12,8 +12,13 @@ echo "$out"
 render_rmse=$(echo "$out" | sed -n 's/^  error *RMSE \([0-9.e-]*\),.*/\1/p')
 [ -n "$render_rmse" ] || { echo "FAIL: render printed no error line"; exit 1; }
 [ "$(head -n 1 "$work/error.csv")" = "seconds,spp,rmse,rel_mse" ] || { echo "FAIL: CSV header"; cat "$work/error.csv"; exit 1; }
-# One row per progressive pass: 1, 2 and 4 spp, in rising time and falling error.
-[ "$(tail -n +2 "$work/error.csv" | cut -d, -f2 | tr '\n' ' ')" = "1 2 4 " ] || { echo "FAIL: CSV rows"; cat "$work/error.csv"; exit 1; }
+# One row per progressive pass, from 1 spp up to 4, in rising time and falling error. How many
+# passes lie between depends on the machine's speed (a pass is cut to 2 s once the speed is known:
+# under ASan on a slow CPU the passes are 1, 2, 3, 4 spp instead of 1, 2, 4), so only the order
+# and the ends are asserted.
+tail -n +2 "$work/error.csv" | cut -d, -f2 |
+  awk '(NR == 1 && $1 != 1) || (NR > 1 && $1 <= last) { bad = 1 } { last = $1; n = NR } END { exit bad || !(n >= 3 && last == 4) }' ||
+  { echo "FAIL: CSV rows (want rising spp from 1 to 4, at least 3 passes)"; cat "$work/error.csv"; exit 1; }
 awk -F, 'NR > 2 && !($1 > t && $3 < e) { exit 1 } NR > 1 { t = $1; e = $3 }' "$work/error.csv" ||
   { echo "FAIL: time must rise and error fall from pass to pass"; cat "$work/error.csv"; exit 1; }
 case "$out" in *"pass 1: 2 spp"*"RMSE"*) ;; *) echo "FAIL: no per-pass error line"; exit 1 ;; esac
