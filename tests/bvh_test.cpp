@@ -14,6 +14,7 @@
 #include "bvh_test_scenes.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/isa/intersect_dispatch.h"
+#include "sanitizer_scale.h"
 #include "test_scenes.h"
 
 namespace wt {
@@ -22,7 +23,7 @@ namespace {
 #ifndef WT_LONG_TESTS
 #define WT_LONG_TESTS 0
 #endif
-constexpr int kRandomRays = WT_LONG_TESTS ? 1 << 21 : 1 << 16;
+constexpr int kRandomRays = test::sanitizer_scaled(WT_LONG_TESTS ? 1 << 21 : 1 << 16);
 
 // What the flat kernels answer for a ray set: the reference every BVH build is held to. The
 // flat kernels equal the scalar textbook on every ISA (packet_intersect_test), so the widest
@@ -131,13 +132,13 @@ TEST(Bvh, AxisAlignedRaysWithZeroDirectionComponents) {
     std::uniform_real_distribution<float> ux(-2.5f, 12.5f), uy(-5.5f, 5.5f), uz(-4.9f, 4.9f);
     const glm::vec3 axes[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {-0.0f, 0.0f, 1.0f}};
     // Few: incoherent packets with infinite slab distances visit most of the tree.
-    for (int i = 0; i < 3000; ++i) {
+    for (int i = 0; i < test::sanitizer_scaled(3000); ++i) {
         const glm::vec3 o(ux(rng), uy(rng), uz(rng));
         for (const glm::vec3& a : axes) rays.push({o, a}, 30.0f);
     }
     // Origins exactly on box planes: the vertices themselves, axis-aligned directions.
     const TriangleSoA& t = scene.triangles;
-    for (uint32_t i = 0; i < t.size(); i += 7)
+    for (uint32_t i = 0; i < t.size(); i += 7 * test::kSanitizerRayDivisor)
         for (const glm::vec3& a : axes) rays.push({t.vertex0(i) - 3.0f * a, a}, 30.0f);
     const FlatAnswers flat(scene, rays);
     for (Isa isa : supported_isas())
@@ -158,7 +159,7 @@ TEST(Bvh, DegenerateSets) {
     cases.push_back({"far from origin", test::triangle_soup(3000, 1.0f, glm::vec3(1e5f, -1e5f, 1e5f), 4)});
     for (const Case& c : cases) {
         const Scene scene = build_scene(c.scene);
-        const test::RayBatch rays = test::rays_at_primitives(scene, 20000, 21);
+        const test::RayBatch rays = test::rays_at_primitives(scene, test::sanitizer_scaled(20000), 21);
         const FlatAnswers flat(scene, rays);
         for (Isa isa : supported_isas())
             for (int width : {4, 8}) expect_bvh_matches_flat(scene, rays, flat, isa, {width, 8, 2}, c.name);

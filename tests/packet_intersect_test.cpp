@@ -13,6 +13,7 @@
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/scene_intersect.h"
 #include "kernel_test_helpers.h"
+#include "sanitizer_scale.h"
 #include "test_scenes.h"
 
 namespace wt {
@@ -74,7 +75,7 @@ RayBatch hexroom_rays(const Scene& scene, int random_count) {
 #ifndef WT_LONG_TESTS
 #define WT_LONG_TESTS 0
 #endif
-constexpr int kRandomRays = WT_LONG_TESTS ? 1 << 22 : 1 << 18;
+constexpr int kRandomRays = test::sanitizer_scaled(WT_LONG_TESTS ? 1 << 22 : 1 << 18);
 
 class PacketIntersect : public ::testing::TestWithParam<Isa> {
 protected:

@@ -19,12 +19,4 @@ wavetrace_test(extremes_test extremes_triangles_test.cpp extremes_spheres_test.c
                extremes_glass_test.cpp extremes_oren_nayar_test.cpp extremes_film_test.cpp extremes_settings_test.cpp)
 wavetrace_test(statistical_test statistical_test.cpp)
 
-# Not through wavetrace_test(): gtest_discover_tests() registers the tests at build time, so
-# the label has to be given to it (set_tests_properties() at configure time sees no tests),
-# and the prefix keeps the names apart from the CI variant's.
-add_executable(statistical_long_test statistical_test.cpp)
-target_link_libraries(statistical_long_test PRIVATE wavetrace_kernels GTest::gtest_main)
-target_compile_definitions(statistical_long_test PRIVATE WT_SCENES_DIR="${PROJECT_SOURCE_DIR}/scenes" WT_LONG_TESTS=1)
-target_include_directories(statistical_long_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
-gtest_discover_tests(statistical_long_test DISCOVERY_TIMEOUT 60 TEST_PREFIX "long."
-                     PROPERTIES LABELS long TIMEOUT 3600)
+wavetrace_long_test(statistical_long_test statistical_test.cpp TIMEOUT 3600)

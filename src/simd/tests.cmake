@@ -27,27 +27,31 @@ include(GoogleTest)
 # flags; GCC uses VEX-encoded (AVX) instructions there, never EVEX (the same script checks),
 # so the binary starts on any AVX2 CPU; missing ISAs are GTEST_SKIPped at run time.
 include(${WT_SOURCE_DIR}/cmake/isa_object.cmake)
-wavetrace_isa_object(simd_test_sse4 simd_test_sse4 ${WT_SOURCE_DIR}/tests/simd_test_sse4.cpp
-                     FLAGS -msse4.2 -Wall -Wextra LINK wavetrace_simd GTest::gtest)
-wavetrace_isa_object(simd_test_avx2 simd_test_avx2 ${WT_SOURCE_DIR}/tests/simd_test_avx2.cpp
-                     FLAGS -mavx2 -mfma -Wall -Wextra LINK wavetrace_simd GTest::gtest)
-wavetrace_isa_object(simd_test_avx512 simd_test_avx512 ${WT_SOURCE_DIR}/tests/simd_test_avx512.cpp
-                     FLAGS -mavx512f -mavx512dq -mavx512bw -mavx512vl -Wall -Wextra LINK wavetrace_simd GTest::gtest)
-foreach(isa sse4 avx2 avx512)
-  target_include_directories(simd_test_${isa}_compile PRIVATE ${WT_SOURCE_DIR}/tests)
-endforeach()
 # With a sanitizer (-O2 and its instrumentation), GCC does put EVEX instructions in the AVX-512
 # TU's static initialisers, so on a CPU without AVX-512 the binary dies of SIGILL before main
-# (seen on a Zen 1 machine). A sanitizer build made on such a CPU leaves that TU out: it could not
-# run its tests there anyway; the Release build keeps it, and isa_isolation_test.sh checks it.
-set(simd_test_isa_objects ${simd_test_sse4} ${simd_test_avx2} ${simd_test_avx512})
+# (seen on a Zen 1 machine). A sanitizer build made on such a CPU leaves that TU out (it is not
+# even compiled): it could not run its tests there anyway; the Release build keeps it, and
+# isa_isolation_test.sh checks it.
+set(simd_test_isas sse4 avx2 avx512)
 if(WAVETRACE_SANITIZE AND EXISTS /proc/cpuinfo)
   file(READ /proc/cpuinfo wt_cpuinfo)
   if(NOT wt_cpuinfo MATCHES "avx512f")
     message(STATUS "simd_test: no AVX-512 on this CPU, so the sanitizer build leaves out its AVX-512 tests")
-    set(simd_test_isa_objects ${simd_test_sse4} ${simd_test_avx2})
+    set(simd_test_isas sse4 avx2)
   endif()
 endif()
+set(simd_test_flags_sse4 -msse4.2)
+set(simd_test_flags_avx2 -mavx2 -mfma)
+set(simd_test_flags_avx512 -mavx512f -mavx512dq -mavx512bw -mavx512vl)
+set(simd_test_isa_objects)
+foreach(isa IN LISTS simd_test_isas)
+  # WAVETRACE_KERNEL_SANITIZE_OPTIONS: the same packet loops as the kernels (CMakeLists.txt).
+  wavetrace_isa_object(simd_test_${isa} simd_test_${isa} ${WT_SOURCE_DIR}/tests/simd_test_${isa}.cpp
+                       FLAGS ${simd_test_flags_${isa}} -Wall -Wextra ${WAVETRACE_KERNEL_SANITIZE_OPTIONS}
+                       LINK wavetrace_simd GTest::gtest)
+  target_include_directories(simd_test_${isa}_compile PRIVATE ${WT_SOURCE_DIR}/tests)
+  list(APPEND simd_test_isa_objects ${simd_test_${isa}})
+endforeach()
 add_executable(simd_test ${simd_test_isa_objects})
 target_include_directories(simd_test PRIVATE ${WT_SOURCE_DIR}/tests)
 target_link_libraries(simd_test PRIVATE wavetrace_simd GTest::gtest_main)
