@@ -56,6 +56,7 @@ struct SampleRange {
 
 struct WavefrontWorkspace;
 class LightTracingPass;
+class PhotonMaps;
 
 // The film channels a render of `scene` with `aovs` needs: the AOVs' (aov_film_channels), then the
 // splat channels when the scene light-traces its caustics (Film::splat_channels).
@@ -91,6 +92,11 @@ private:
     // says are still sampled.
     void render_tiles(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done,
                       const AdaptiveState* adaptive);
+    // render_tiles, and with photons the light paths of the range first, batch by batch.
+    void render_camera_paths(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done,
+                             const AdaptiveState* adaptive);
+    // The light paths of `range` (splats, and with `photons` the photons of a batch).
+    void trace_light_paths(Film& film, SampleRange range, PhotonMaps* photons);
 
     const Scene& scene_;
     RenderOptions options_;
@@ -106,6 +112,7 @@ private:
     // Created by the worker that uses it, on first use, so its pages live near that core.
     std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces_;
     std::unique_ptr<LightTracingPass> light_tracing_;  // only when the scene light-traces caustics
+    std::unique_ptr<PhotonMaps> photons_;              // only when it merges photons too
     std::vector<std::vector<uint32_t>> sampled_pixels_;  // per worker: a tile's pixels still sampled (adaptive)
     double seconds_ = 0.0;
 };
