@@ -26,6 +26,7 @@ namespace {
 const RenderOptions& checked(const Scene& scene, const RenderOptions& options) {
     if (options.tile_size < 1) throw std::invalid_argument("render: tile size must be at least 1");
     if (options.batch_paths < 1) throw std::invalid_argument("render: batch size must be at least 1");
+    if (options.photon_batch_paths < 1) throw std::invalid_argument("render: the photon batch must hold a light path");
     if (scene.settings.accuracy.triangles == TriangleTest::watertight && scene.triangles.parallelogram_count > 0)
         throw std::invalid_argument("render: the watertight triangle test cannot render parallelograms; build the scene "
                                     "with the accuracy settings it is rendered with");
@@ -92,7 +93,7 @@ void RenderSession::trace_light_paths(Film& film, SampleRange range, PhotonMaps*
 void RenderSession::render_camera_paths(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done,
                                         const AdaptiveState* adaptive) {
     if (!photons_) return render_tiles(film, range, tile_done, adaptive);
-    const uint32_t step = photons_->samples_per_batch(light_paths_per_sample(scene_.settings));
+    const uint32_t step = PhotonMaps::samples_per_batch(options_.photon_batch_paths, light_paths_per_sample(scene_.settings));
     for (uint32_t begin = range.begin; begin < range.end;) {
         const SampleRange batch{begin, begin + std::min(step, range.end - begin)};
         trace_light_paths(film, batch, photons_.get());
@@ -146,6 +147,7 @@ RenderResult RenderSession::result() const {
     result.isa = isa_;
     result.accel = accel_;
     result.bvh = bvh_.stats();
+    if (photons_) result.photon_maps_built = photons_->maps_built();
     return result;
 }
 

@@ -32,6 +32,9 @@ struct RenderOptions {
     int threads = 0;                 // 0: one per hardware thread
     int tile_size = 16;              // pixels per tile side
     std::size_t batch_paths = 2048;  // camera paths per wavefront batch: queues sized to stay in L2
+    // With photons, the light paths whose photons are held at once (PhotonMaps::samples_per_batch):
+    // memory, never the image.
+    uint64_t photon_batch_paths = uint64_t(1) << 18;
     std::optional<Isa> isa;          // intersection kernels; empty: the best this CPU runs
     Accel accel = Accel::automatic;  // never changes the image, only how fast it comes
     BvhBuildOptions bvh;             // when a BVH is built (its `threads` is ignored: the render's are used)
@@ -46,6 +49,7 @@ struct RenderResult {
     Isa isa = Isa::scalar;  // kernels the wavefront integrator used
     Accel accel = Accel::brute;  // what `automatic` resolved to
     BvhStats bvh;                // when accel is bvh: the tree's size and build time
+    uint64_t photon_maps_built = 0;  // with photons: the samples whose photons some camera path gathered
 };
 
 // Samples [begin, end) of every pixel.

@@ -40,15 +40,17 @@ struct PhotonGather {
     uint32_t photons = 0;      // within the radius and counted
 };
 
-// The estimate at `surface` (material m, diffuse), reached along d, from the photons of `grid`
-// that arrived after at most `max_vertex` light-path surfaces.
-inline PhotonGather gather_photons(const PhotonGrid& grid, const Material& m, const SurfacePoint& surface,
-                                   const glm::vec3& d, uint32_t max_vertex) {
+// The estimate at `surface` (material m, diffuse), reached along d, from the photons that
+// for_each_near(visit) visits (those within `radius` of the surface point, as
+// PhotonGrid::for_each_within) that arrived after at most `max_vertex` light-path surfaces.
+template <typename ForEachNear>
+PhotonGather gather_photons_from(ForEachNear&& for_each_near, float radius, const Material& m,
+                                 const SurfacePoint& surface, const glm::vec3& d, uint32_t max_vertex) {
     const LightSamplingPoint at = light_sampling_point(surface, d);
     const DiffuseBsdfAtView bsdf(m, at.shading_normal, -d);
     FixedPoint sum[3] = {0, 0, 0};
     PhotonGather out;
-    grid.for_each_within(surface.position, [&](const Photon& p, uint32_t) {
+    for_each_near([&](const Photon& p, uint32_t) {
         if (p.vertex > max_vertex) return;
         // Lit on the side the path sees, by a photon of a surface facing the same way (not the
         // far side of a thin wall, nor the other wall of a corner).
@@ -66,13 +68,20 @@ inline PhotonGather gather_photons(const PhotonGrid& grid, const Material& m, co
     });
     if (out.photons == 0) return out;
     const double pi = 3.14159265358979323846;
-    const double inverse_area = 1.0 / (pi * double(grid.radius()) * double(grid.radius()));
+    const double inverse_area = 1.0 / (pi * double(radius) * double(radius));
     const glm::vec3 radiance(float(from_fixed_point(sum[0]) * inverse_area), float(from_fixed_point(sum[1]) * inverse_area),
                              float(from_fixed_point(sum[2]) * inverse_area));
     // Beyond a float (absurd powers on a tiny disk): nothing, rather than an infinity in the pixel.
     if (std::isfinite(radiance.x) && std::isfinite(radiance.y) && std::isfinite(radiance.z)) out.radiance = radiance;
     else out.photons = 0;
     return out;
+}
+
+// The same from the photons of `grid`.
+inline PhotonGather gather_photons(const PhotonGrid& grid, const Material& m, const SurfacePoint& surface,
+                                   const glm::vec3& d, uint32_t max_vertex) {
+    return gather_photons_from([&](auto&& visit) { grid.for_each_within(surface.position, visit); }, grid.radius(), m,
+                               surface, d, max_vertex);
 }
 
 }  // namespace wt

@@ -17,8 +17,8 @@ PhotonMaps::PhotonMaps(const Scene& scene)
 
 PhotonMaps::~PhotonMaps() = default;
 
-uint32_t PhotonMaps::samples_per_batch(uint64_t light_paths_per_sample) const {
-    return uint32_t(std::clamp<uint64_t>(kLightPathsPerBatch / std::max<uint64_t>(1, light_paths_per_sample), 1, 1u << 20));
+uint32_t PhotonMaps::samples_per_batch(uint64_t batch_paths, uint64_t light_paths_per_sample) {
+    return uint32_t(std::clamp<uint64_t>(batch_paths / std::max<uint64_t>(1, light_paths_per_sample), 1, 1u << 20));
 }
 
 void PhotonMaps::start_batch(uint32_t begin, uint32_t end, uint64_t items_per_sample) {

@@ -28,10 +28,9 @@ public:
     explicit PhotonMaps(const Scene& scene);
     ~PhotonMaps();
 
-    // The light paths a batch holds at most (photon memory is about 52 bytes per photon, a few
-    // photons per light path at most): samples per batch = this / light paths per sample, at least 1.
-    static constexpr uint64_t kLightPathsPerBatch = uint64_t(1) << 18;
-    uint32_t samples_per_batch(uint64_t light_paths_per_sample) const;
+    // Samples per batch for a batch of at most `batch_paths` light paths (RenderOptions::
+    // photon_batch_paths; a photon is 52 bytes, and a light path leaves a few at most), at least 1.
+    static uint32_t samples_per_batch(uint64_t batch_paths, uint64_t light_paths_per_sample);
 
     // Empties the maps and makes room for samples [begin, end), `items_per_sample` photon lists each.
     void start_batch(uint32_t begin, uint32_t end, uint64_t items_per_sample);
