@@ -22,6 +22,18 @@ inline TriangleMesh quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, uin
     return m;
 }
 
+// The direction of the camera's ray through film position (fx, fy), by a pinhole model written
+// here from the scene's description (not the renderer's Camera); not normalised.
+inline glm::dvec3 view_direction(const SceneDescription& d, double fx, double fy) {
+    const glm::dvec3 eye(d.camera.eye), forward = glm::normalize(glm::dvec3(d.camera.look_at) - eye);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(d.camera.up)));
+    const glm::dvec3 up = glm::cross(right, forward);
+    const double half_height = std::tan(0.5 * double(d.camera.fov_degrees) * M_PI / 180.0);
+    const double half_width = half_height * d.settings.width / d.settings.height;
+    const double sx = 2.0 * fx / d.settings.width - 1.0, sy = 1.0 - 2.0 * fy / d.settings.height;
+    return forward + sx * half_width * right + sy * half_height * up;
+}
+
 // The mirror caustic: a diffuse floor (z = 0, albedo rho), a mirror ceiling (z = 2,
 // reflectance R) and between them a small square light at z = 1 that emits only upwards, so the
 // floor is lit only through the mirror. With max_bounces 3 the one path that carries light to
@@ -95,17 +107,11 @@ struct WallMirrorCaustic {
         return d;
     }
 
-    // The floor point the camera sees in the wall at film position (fx, fy), by a pinhole model
-    // written here from the description, if the view meets the wall (below the ceiling) and then
-    // the floor well inside it, away from the light's shadow and missing the light's square.
+    // The floor point the camera sees in the wall at film position (fx, fy) (view_direction), if
+    // the view meets the wall (below the ceiling) and then the floor well inside it, away from
+    // the light's shadow and missing the light's square.
     static std::optional<glm::dvec3> floor_point(const SceneDescription& d, double fx, double fy) {
-        const glm::dvec3 eye(d.camera.eye), forward = glm::normalize(glm::dvec3(d.camera.look_at) - eye);
-        const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(d.camera.up)));
-        const glm::dvec3 up = glm::cross(right, forward);
-        const double half_height = std::tan(0.5 * double(d.camera.fov_degrees) * M_PI / 180.0);
-        const double half_width = half_height * d.settings.width / d.settings.height;
-        const double sx = 2.0 * fx / d.settings.width - 1.0, sy = 1.0 - 2.0 * fy / d.settings.height;
-        const glm::dvec3 dir = forward + sx * half_width * right + sy * half_height * up;
+        const glm::dvec3 eye(d.camera.eye), dir = view_direction(d, fx, fy);
         const double h = MirrorCaustic::half_side + 1e-3;
         const auto crosses_light = [&](const glm::dvec3& from, const glm::dvec3& along, double t_end) {
             const double t = (1.0 - from.z) / along.z;
