@@ -44,6 +44,17 @@ inline Film film_for(const Scene& scene, const AovSelection& aovs = {}) {
     return Film(scene.settings.width, scene.settings.height, render_film_channels(scene, aovs));
 }
 
+// `film` is the same bits rendered with 3 threads, the reference integrator, odd tiles and
+// batches, the scalar kernels, and the BVH with either integrator.
+inline void expect_same_film_for_any_schedule(const SceneDescription& d, const Film& film) {
+    EXPECT_TRUE(film == render_film(d, Integrator::wavefront, 3).film);
+    EXPECT_TRUE(film == render_film(d, Integrator::reference, 2).film);
+    EXPECT_TRUE(film == render_film(d, Integrator::wavefront, 2, 5, 97).film);  // tiles and batches
+    EXPECT_TRUE(film == render_film(d, Integrator::wavefront, 2, 16, 2048, Isa::scalar).film);
+    EXPECT_TRUE(film == render_film(d, Integrator::wavefront, 2, 16, 2048, {}, Accel::bvh).film);
+    EXPECT_TRUE(film == render_film(d, Integrator::reference, 2, 16, 2048, {}, Accel::bvh).film);
+}
+
 // Every sum (radiance, squares, extra channels) and count.
 inline bool films_bit_identical(const Film& a, const Film& b) { return a == b; }
 

@@ -16,8 +16,8 @@ void print_vec(std::ostream& out, const glm::vec3& v) { out << "(" << v.x << ", 
 
 DebugLightPath parse_debug_light_path(const std::string& text, const Scene& scene) {
     if (!scene.light_traces_caustics)
-        throw std::runtime_error("--debug-light-path: this render traces no light paths (caustics \"light_tracing\" and "
-                                 "a scene with lights and a mirror or glass surface)");
+        throw std::runtime_error("--debug-light-path: this render traces no light paths (caustics \"light_tracing\" or "
+                                 "\"photons\", and a scene with lights and a mirror or glass surface)");
     char comma = 0;
     long long index = -1, sample = -1;
     std::istringstream in(text);

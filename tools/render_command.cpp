@@ -61,12 +61,25 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
     cmd->add_option("--light-sampling", o.light_sampling, "nee (light samples only) or mis (light and BSDF samples, power heuristic)")
         ->check(CLI::IsMember({"nee", "mis"}));
     cmd->add_option("--caustics", o.caustics,
-                    "Caustics seen directly (camera, diffuse, mirror or glass, light): path (the camera path finds them "
-                    "by chance) or light_tracing (light paths through the mirrors and glass, connected to the camera)")
-        ->check(CLI::IsMember({"path", "light_tracing"}));
+                    "Caustics (diffuse, mirror or glass, light): path (the camera path finds them by chance), "
+                    "light_tracing (light paths through the mirrors and glass, connected to the camera, for caustics "
+                    "seen directly) or photons (light_tracing, and the same paths as photons for caustics seen through "
+                    "a mirror or glass)")
+        ->check(CLI::IsMember({"path", "light_tracing", "photons"}));
     cmd->add_option("--light-paths-per-pixel", o.light_paths_per_pixel,
                     "With light tracing: light paths per sample, per pixel of the image (default 1)")
         ->check(CLI::Range(1.0 / 1024, 64.0));
+    cmd->add_option("--photon-radius", o.photon_radius,
+                    "With photons: the lookup radius of sample 0 in scene units, shrinking with later samples "
+                    "(default: automatic, two pixels' footprint at the scene's distance)")
+        ->check(non_negative_float())
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                const double r = std::stod(text);  // a number: non_negative_float checked it
+                if (r > 0.0 && r <= double(kPhotonRadiusMax)) return {};
+                return "expected a radius greater than 0 and at most 1e18, got '" + text + "'";
+            },
+            "RADIUS > 0"));
     cmd->add_option("--clamp-indirect", o.clamp_indirect, "Limit each indirect contribution to X per channel (0: off)")
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--adaptive-threshold", o.adaptive_threshold,
@@ -139,6 +152,7 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.clamp_indirect) s.estimator.clamp_indirect = *o.clamp_indirect;
     if (o.caustics) s.estimator.caustics = *parse_caustic_paths(*o.caustics);
     if (o.light_paths_per_pixel) s.estimator.light_paths_per_pixel = float(*o.light_paths_per_pixel);
+    if (o.photon_radius) s.estimator.photon_radius = *o.photon_radius;
     if (o.adaptive_threshold) s.adaptive.threshold = *o.adaptive_threshold;
     if (o.adaptive_min_spp) s.adaptive.min_spp = *o.adaptive_min_spp;
 }

@@ -22,6 +22,7 @@ struct RenderCommandOptions {
     std::optional<std::string> sampler, light_sampling, caustics;
     std::optional<float> clamp_indirect;
     std::optional<double> light_paths_per_pixel;
+    std::optional<float> photon_radius;
     std::optional<float> adaptive_threshold;
     std::optional<int> adaptive_min_spp;
     RenderOptions render;

@@ -14,9 +14,16 @@ const char* name_of(SamplerKind s) {
 }
 const char* name_of(LightSampling l) { return l == LightSampling::mis ? "mis" : "nee"; }
 
-const char* name_of(CausticPaths c) { return c == CausticPaths::light_tracing ? "light_tracing" : "path"; }
+const char* name_of(CausticPaths c) {
+    switch (c) {
+        case CausticPaths::light_tracing: return "light_tracing";
+        case CausticPaths::photons: return "photons";
+        case CausticPaths::path: break;
+    }
+    return "path";
+}
 std::optional<CausticPaths> parse_caustic_paths(const std::string& s) {
-    return parse_one_of(s, {CausticPaths::path, CausticPaths::light_tracing});
+    return parse_one_of(s, {CausticPaths::path, CausticPaths::light_tracing, CausticPaths::photons});
 }
 
 std::optional<SamplerKind> parse_sampler(const std::string& s) {

@@ -21,12 +21,20 @@ enum class LightSampling : uint8_t {
     mis,  // light samples and the BSDF-sampled direction both count, power heuristic (Veach 1997)
 };
 
-// Who finds caustic paths seen directly: a diffuse surface the camera sees, lit by the lights
-// through one or more mirror or glass bounces (camera -> diffuse -> specular... -> light).
+// Who finds caustic paths: a diffuse surface lit by the lights through one or more mirror or
+// glass bounces (diffuse -> specular... -> light), seen directly (camera -> diffuse) or itself
+// seen through a mirror or glass (camera -> specular... -> diffuse).
 enum class CausticPaths : uint8_t {
     path,           // the camera path's BSDF sample, which must hit the light by chance
     light_tracing,  // paths from the lights through the specular bounces, connected to the camera
+    // light_tracing, and the same light paths' diffuse vertices as photons: a camera path whose
+    // first hit is a mirror or glass gathers them at its first diffuse vertex (kernels/photons)
+    photons,
 };
+
+// The largest photon_radius accepted: its square, which the lookups compare distances with, stays
+// a finite float (1e36 < 3.4e38).
+constexpr float kPhotonRadiusMax = 1e18f;
 
 struct EstimatorSettings {
     SamplerKind sampler = SamplerKind::stratified;
@@ -41,6 +49,10 @@ struct EstimatorSettings {
     // With light tracing, light paths per pixel of the image and per sample: the light-tracing
     // work per sample is this times width x height paths.
     float light_paths_per_pixel = 1.0f;
+    // With photons, the radius r_0 of sample 0's photon lookups, in scene units (later samples'
+    // shrink from it, kernels/photons/photon_radius.h); 0: automatic, from the camera's pixel
+    // footprint at the scene's distance.
+    float photon_radius = 0.0f;
 };
 
 const char* name_of(SamplerKind);

@@ -67,6 +67,16 @@ inline LightSamplingPoint light_sampling_point(const SurfacePoint& surface, cons
             offset_ray_origin(surface.position, surface.error, n), surface.smooth};
 }
 
+// The BSDF a diffuse vertex applies to light that arrives as power, seen from the view the BSDF
+// was made for (light tracing's camera connections, the photons): f about the shading normal,
+// times the adjoint correction cos_shading / cos_geometric for the geometric cosine the power
+// already carries (folded_diffuse's K, which is f cos_shading, over cos_i; flat, plain f).
+// `cos_i` is the geometric cosine of wi about at.normal, positive.
+inline glm::vec3 diffuse_bsdf_for_power(const DiffuseBsdfAtView& bsdf, const LightSamplingPoint& at, const glm::vec3& wi,
+                                        float cos_i) {
+    return at.smooth ? folded_diffuse(bsdf, at.normal, at.shading_normal, wi, cos_i) / cos_i : bsdf(wi, cos_i);
+}
+
 // The emission a path adds at a hit, arriving along `ray` with `throughput` after a flight of
 // `t`. `bsdf_pdf` is the solid-angle pdf with which the previous vertex's BSDF sampled `ray`
 // when light samples there could have found this point too (mis only: 0 after the camera and
@@ -205,26 +215,49 @@ private:
 // estimate every path whose first vertex from the camera is diffuse and whose last bounce before
 // the light is a mirror or glass (camera -> diffuse -> anything -> specular -> light: caustics
 // seen directly, and the light they throw on to other surfaces), and the camera paths leave
-// exactly those out: the path space is split in two and each part has one estimator.
+// exactly those out: the path space is split in two and each part has one estimator. With
+// photons (Scene::merges_photons, kernels/photons/photon_gather.h) a path whose first hit is a
+// mirror or glass gathers the same light paths as photons at its first diffuse vertex, and
+// leaves the paths that end specular -> light from there on to them as well.
 struct PathContinuation {
     Ray ray;
     glm::vec3 throughput;
     // The next hit's emission is counted: always with mis, else only after a specular bounce
     // (no light sample covered this direction); never where the light paths count it.
     bool count_emission;
-    // Light tracing only (never set without it): the path's first hit was diffuse, so what a
-    // specular bounce of it finds is the light paths' to count.
-    bool first_hit_diffuse;
+    // Light tracing only (never set without it): what a specular bounce of the path finds from
+    // here on is the light paths' to count. Set when the first hit was diffuse (light tracing's
+    // splats) and, with photons, at the first diffuse vertex after mirrors and glass (where the
+    // photons were gathered, gathers_photons): so a path at bounce > 0 without it has met only
+    // specular surfaces.
+    bool specular_light_elsewhere;
     float bsdf_pdf;  // mis: the direction's pdf if light samples competed for it, else 0 (emission_added)
 };
 
+// Whether the photons' estimate is added at this vertex: the first diffuse vertex, past the
+// first hit, of a path that has met only mirrors and glass before it, on a surface that reflects
+// light, and early enough that a photon (two light path vertices at least) keeps the whole path
+// within max_bounces (kernels/photons/photon_gather.h). `specular_light_elsewhere` is the
+// incoming ray's.
+inline bool gathers_photons(const Scene& scene, const Material& m, uint32_t bounce, bool specular_light_elsewhere) {
+    return scene.merges_photons && bounce > 0 && !specular_light_elsewhere && int(bounce) + 2 < scene.settings.max_bounces &&
+           gathers_direct_light(m);
+}
+
+// The most light path vertices a photon gathered at `bounce` may have: the path it completes
+// has bounce + vertex surfaces, fewer than max_bounces, as the camera paths' own (whose last
+// surface before the light is at bounce max_bounces - 1 at most).
+inline uint32_t photon_vertex_limit(const Scene& scene, uint32_t bounce) {
+    return uint32_t(scene.settings.max_bounces) - 1 - bounce;
+}
+
 // Samples the next direction from the BSDF and applies Russian roulette. Empty when the path
-// ends. `bounce` is the index of the vertex being shaded (0 = first hit); `first_hit_diffuse` is
-// the incoming ray's (PathContinuation::first_hit_diffuse).
+// ends. `bounce` is the index of the vertex being shaded (0 = first hit);
+// `specular_light_elsewhere` is the incoming ray's (PathContinuation::specular_light_elsewhere).
 template <typename E>
 inline std::optional<PathContinuation> continue_path(const Scene& scene, const Material& m, const SurfacePoint& surface,
                                                      const glm::vec3& d, const glm::vec3& throughput, const PathSeed& path,
-                                                     uint32_t bounce, bool first_hit_diffuse) {
+                                                     uint32_t bounce, bool specular_light_elsewhere) {
     if (int(bounce) + 1 >= scene.settings.max_bounces) return std::nullopt;
     const typename E::Sampler random(path, bounce, uint32_t(scene.settings.shadow_rays));
     const UniformPair direction = random.pair(dim::bsdf_u);
@@ -241,8 +274,9 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
     // A black surface (the light's back, an albedo-0 emitter) ends the path: nothing it could
     // gather would count.
     if (!(next.throughput.x > 0.0f || next.throughput.y > 0.0f || next.throughput.z > 0.0f)) return std::nullopt;
-    next.first_hit_diffuse = scene.light_traces_caustics && (bounce == 0 ? !s.specular : first_hit_diffuse);
-    next.count_emission = (E::mis || s.specular) && !(next.first_hit_diffuse && s.specular);
+    next.specular_light_elsewhere =
+        specular_light_elsewhere || (!s.specular && (bounce == 0 ? scene.light_traces_caustics : scene.merges_photons));
+    next.count_emission = (E::mis || s.specular) && !(next.specular_light_elsewhere && s.specular);
     next.bsdf_pdf = 0.0f;
     if constexpr (E::mis)
         if (!s.specular) next.bsdf_pdf = diffuse_direction_pdf(surface, d, s.direction);

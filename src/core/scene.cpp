@@ -7,7 +7,7 @@
 namespace wt {
 
 bool light_traces_caustics(const SceneDescription& d) {
-    if (d.settings.estimator.caustics != CausticPaths::light_tracing) return false;
+    if (d.settings.estimator.caustics == CausticPaths::path) return false;  // photons are light tracing's paths too
     const auto has = [&](bool (Material::*property)() const) {
         const auto used = [&](uint32_t material) { return (d.materials[material].*property)(); };
         return std::any_of(d.meshes.begin(), d.meshes.end(),
@@ -59,6 +59,11 @@ Scene build_scene(const SceneDescription& description) {
     scene.lights = LightTable(scene.triangles, scene.materials);
     // The loader refuses degenerate lights, so a description with an emitter has a light table.
     scene.light_traces_caustics = light_traces_caustics(description) && !scene.lights.empty();
+    // Photons land only on diffuse surfaces that reflect something: without one there is nothing to gather.
+    scene.merges_photons = scene.light_traces_caustics && description.settings.estimator.caustics == CausticPaths::photons &&
+                           std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) {
+                               return !m.is_specular() && (m.albedo.x > 0.0f || m.albedo.y > 0.0f || m.albedo.z > 0.0f);
+                           });
     return scene;
 }
 

@@ -29,6 +29,10 @@ struct Scene {
     // Light paths estimate the caustics seen directly (path_vertex.h, light_paths_count_emission):
     // asked for by the settings, and the scene has lights and a mirror or glass surface.
     bool light_traces_caustics = false;
+    // And the camera paths whose first hit is a mirror or glass gather the same light paths as
+    // photons (path_vertex.h, kernels/photons): asked for, light-traced, and some diffuse
+    // surface reflects light.
+    bool merges_photons = false;
 
     uint32_t primitive_count() const { return uint32_t(triangles.size() + spheres.size()); }
 };
@@ -39,8 +43,8 @@ struct Scene {
 Scene build_scene(const SceneDescription& description);
 
 // Scene::light_traces_caustics, from the description alone (for the film's channels before the
-// scene is built): the settings ask for light tracing, some triangle emits and some surface is a
-// mirror or glass.
+// scene is built): the settings ask for light tracing (or photons, which trace the same light
+// paths), some triangle emits and some surface is a mirror or glass.
 bool light_traces_caustics(const SceneDescription& description);
 
 // What the shade stage needs to know about a hit.

@@ -2,6 +2,8 @@
 
 #include "core/path_vertex.h"
 #include "kernels/accel/bvh_single_ray.h"
+#include "kernels/photons/photon_gather.h"
+#include "kernels/photons/photon_maps.h"
 #include "kernels/scene_intersect.h"
 
 namespace wt {
@@ -10,7 +12,8 @@ namespace {
 
 template <typename E>
 glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
-                     std::vector<PathVertexRecord>* record, const BvhView* bvh, FirstSurface* first_surface) {
+                     std::vector<PathVertexRecord>* record, const BvhView* bvh, FirstSurface* first_surface,
+                     const PhotonMaps* photons) {
     const AccuracySettings& accuracy = scene.settings.accuracy;
     auto closest = [&](const Ray& r) { return bvh ? bvh_intersect_closest(*bvh, accuracy, r) : intersect_closest(scene, r); };
     auto blocked = [&](const Ray& r, float tmax) {
@@ -24,7 +27,7 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
     glm::vec3 throughput(1.0f);
     bool count_emission = true;  // camera rays, specular bounces (no light sample covered them), any with mis
     float bsdf_pdf = 0.0f;       // mis: see emission_added
-    bool first_hit_diffuse = false;  // light tracing only: PathContinuation::first_hit_diffuse
+    bool specular_light_elsewhere = false;  // light tracing only: PathContinuation::specular_light_elsewhere
 
     for (uint32_t bounce = 0;; ++bounce) {
         const Hit hit = closest(ray);
@@ -34,11 +37,19 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
         if (first_surface && !first_surface->found)
             record_first_surface(*first_surface, scene.camera, bounce, ray, hit, surface, m, throughput);
         PathVertexRecord vertex{bounce, hit, surface.position, surface.normal, surface.shading_normal, surface.material,
-                                throughput, glm::vec3(0.0f), 0, 0, glm::vec3(0.0f)};
+                                throughput, glm::vec3(0.0f), 0, 0, glm::vec3(0.0f), 0.0f, 0, glm::vec3(0.0f)};
 
         if (count_emission) {
             vertex.emission_added = emission_added<E>(scene, m, surface, ray, hit.t, throughput, bsdf_pdf, bounce);
             radiance += vertex.emission_added;
+        }
+        if (photons && gathers_photons(scene, m, bounce, specular_light_elsewhere)) {
+            const PhotonGrid& map = photons->map(sample);
+            const PhotonGather g = gather_photons(map, m, surface, ray.direction, photon_vertex_limit(scene, bounce));
+            vertex.photon_radius = map.radius();
+            vertex.photons_gathered = g.photons;
+            vertex.photons_added = throughput * g.radiance;
+            radiance += vertex.photons_added;
         }
         if (!scene.lights.empty() && gathers_direct_light(m)) {
             const DirectLightSampler<E> lights(scene, m, surface, light_sampling_point(surface, ray.direction),
@@ -54,13 +65,14 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
         }
         if (record) record->push_back(vertex);
 
-        const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce, first_hit_diffuse);
+        const auto next =
+            continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce, specular_light_elsewhere);
         if (!next) break;
         ++counts.bounce_rays;
         ray = next->ray;
         throughput = next->throughput;
         count_emission = next->count_emission;
-        first_hit_diffuse = next->first_hit_diffuse;
+        specular_light_elsewhere = next->specular_light_elsewhere;
         bsdf_pdf = next->bsdf_pdf;
     }
     return radiance;
@@ -68,11 +80,11 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
 
 template <typename E>
 void render_pixel(const Scene& scene, uint32_t pixel, uint32_t sample_begin, uint32_t sample_end, Film& film,
-                  RayCounts& counts, const BvhView* bvh, const AovSelection& aovs) {
+                  RayCounts& counts, const BvhView* bvh, const AovSelection& aovs, const PhotonMaps* photons) {
     const bool with_aovs = aovs.needs_path_data();
     for (uint32_t s = sample_begin; s < sample_end; ++s) {
         FirstSurface first;
-        const glm::vec3 radiance = trace_path<E>(scene, pixel, s, counts, nullptr, bvh, with_aovs ? &first : nullptr);
+        const glm::vec3 radiance = trace_path<E>(scene, pixel, s, counts, nullptr, bvh, with_aovs ? &first : nullptr, photons);
         ++counts.samples;
         float extra[Film::max_extra_channels];
         if (with_aovs) aov_sample_values(aovs, first, extra);
@@ -82,34 +94,37 @@ void render_pixel(const Scene& scene, uint32_t pixel, uint32_t sample_begin, uin
 
 template <typename E>
 void render_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
-                 RayCounts& counts, const BvhView* bvh, const AovSelection& aovs) {
+                 RayCounts& counts, const BvhView* bvh, const AovSelection& aovs, const PhotonMaps* photons) {
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x)
             render_pixel<E>(scene, uint32_t(y) * uint32_t(scene.settings.width) + uint32_t(x), sample_begin, sample_end,
-                            film, counts, bvh, aovs);
+                            film, counts, bvh, aovs, photons);
 }
 
 }  // namespace
 
 glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
-                               std::vector<PathVertexRecord>* record, const BvhView* bvh, FirstSurface* first_surface) {
+                               std::vector<PathVertexRecord>* record, const BvhView* bvh, FirstSurface* first_surface,
+                               const PhotonMaps* photons) {
     return with_estimator(scene.settings.estimator, [&](auto estimator) {
-        return trace_path<decltype(estimator)>(scene, pixel, sample, counts, record, bvh, first_surface);
+        return trace_path<decltype(estimator)>(scene, pixel, sample, counts, record, bvh, first_surface, photons);
     });
 }
 
 void render_reference_tile(const Scene& scene, const Tile& tile, uint32_t sample_begin, uint32_t sample_end, Film& film,
-                           RayCounts& counts, const BvhView* bvh, const AovSelection& aovs) {
+                           RayCounts& counts, const BvhView* bvh, const AovSelection& aovs, const PhotonMaps* photons) {
     with_estimator(scene.settings.estimator, [&](auto estimator) {
-        render_tile<decltype(estimator)>(scene, tile, sample_begin, sample_end, film, counts, bvh, aovs);
+        render_tile<decltype(estimator)>(scene, tile, sample_begin, sample_end, film, counts, bvh, aovs, photons);
     });
 }
 
 void render_reference_pixels(const Scene& scene, TilePixels pixels, uint32_t sample_begin, uint32_t sample_end,
-                             Film& film, RayCounts& counts, const BvhView* bvh, const AovSelection& aovs) {
+                             Film& film, RayCounts& counts, const BvhView* bvh, const AovSelection& aovs,
+                             const PhotonMaps* photons) {
     with_estimator(scene.settings.estimator, [&](auto estimator) {
         for (std::size_t i = 0; i < pixels.count; ++i)
-            render_pixel<decltype(estimator)>(scene, pixels.index[i], sample_begin, sample_end, film, counts, bvh, aovs);
+            render_pixel<decltype(estimator)>(scene, pixels.index[i], sample_begin, sample_end, film, counts, bvh, aovs,
+                                              photons);
     });
 }
 

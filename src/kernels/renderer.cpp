@@ -9,6 +9,7 @@
 #include "kernels/adaptive/adaptive_range.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/memory_estimate.h"
+#include "kernels/photons/photon_maps.h"
 #include "kernels/reference_integrator.h"
 #include "kernels/wavefront/wavefront_renderer.h"
 
@@ -25,6 +26,7 @@ namespace {
 const RenderOptions& checked(const Scene& scene, const RenderOptions& options) {
     if (options.tile_size < 1) throw std::invalid_argument("render: tile size must be at least 1");
     if (options.batch_paths < 1) throw std::invalid_argument("render: batch size must be at least 1");
+    if (options.photon_batch_paths < 1) throw std::invalid_argument("render: the photon batch must hold a light path");
     if (scene.settings.accuracy.triangles == TriangleTest::watertight && scene.triangles.parallelogram_count > 0)
         throw std::invalid_argument("render: the watertight triangle test cannot render parallelograms; build the scene "
                                     "with the accuracy settings it is rendered with");
@@ -48,6 +50,7 @@ RenderSession::RenderSession(const Scene& scene, const RenderOptions& options)
     }
     if (scene.light_traces_caustics)
         light_tracing_ = std::make_unique<LightTracingPass>(scene, accel_ == Accel::bvh ? &bvh_tree_ : nullptr, threads_);
+    if (scene.merges_photons) photons_ = std::make_unique<PhotonMaps>(scene);
 }
 
 RenderSession::~RenderSession() = default;
@@ -66,17 +69,38 @@ void RenderSession::render_samples(Film& film, SampleRange range, const std::fun
     const auto start = std::chrono::steady_clock::now();
     if (adaptive.enabled())
         render_adaptive_range(film, adaptive, range, &pool_,
-                              [&](SampleRange piece) { render_tiles(film, piece, tile_done, &film.adaptive()); });
+                              [&](SampleRange piece) { render_camera_paths(film, piece, tile_done, &film.adaptive()); });
     else
-        render_tiles(film, range, tile_done, nullptr);
+        render_camera_paths(film, range, tile_done, nullptr);
     // The light paths of every sample of the range, whichever pixels still take samples: their
     // splats land anywhere and are normalised by the samples traced, never by a pixel's count.
-    if (light_tracing_) {
-        const IntersectContext context{scene_view(scene_), kernels_, accel_ == Accel::bvh ? &bvh_tree_ : nullptr};
-        light_tracing_->render(film, range.begin, range.end, pool_, counts_,
-                               options_.integrator == Integrator::wavefront ? &context : nullptr);
-    }
+    // (With photons they were traced batch by batch, before their camera paths.)
+    if (light_tracing_ && !photons_) trace_light_paths(film, range, nullptr);
+    if (photons_) photons_->release();
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void RenderSession::trace_light_paths(Film& film, SampleRange range, PhotonMaps* photons) {
+    const IntersectContext context{scene_view(scene_), kernels_, accel_ == Accel::bvh ? &bvh_tree_ : nullptr};
+    light_tracing_->render(film, range.begin, range.end, pool_, counts_,
+                           options_.integrator == Integrator::wavefront ? &context : nullptr, photons);
+}
+
+// With photons, a sample's camera paths need its photon map, so the range is cut into batches of
+// a few samples (PhotonMaps::samples_per_batch): each batch's light paths first (their splats
+// and photons), then its camera paths, then the photons go. The film's sums are exact, so the
+// cut changes no bit of the image; every sample's light paths are still traced once.
+void RenderSession::render_camera_paths(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done,
+                                        const AdaptiveState* adaptive) {
+    if (!photons_) return render_tiles(film, range, tile_done, adaptive);
+    const uint32_t step = PhotonMaps::samples_per_batch(options_.photon_batch_paths, light_paths_per_sample(scene_.settings));
+    for (uint32_t begin = range.begin; begin < range.end;) {
+        const SampleRange batch{begin, begin + std::min(step, range.end - begin)};
+        trace_light_paths(film, batch, photons_.get());
+        render_tiles(film, batch, tile_done, adaptive);
+        photons_->end_batch();
+        begin = batch.end;
+    }
 }
 
 void RenderSession::render_tiles(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done,
@@ -92,8 +116,10 @@ void RenderSession::render_tiles(Film& film, SampleRange range, const std::funct
         if (adaptive && pixels.count == 0) {
             // Every pixel of the tile has stopped.
         } else if (options_.integrator == Integrator::reference) {
-            if (adaptive) render_reference_pixels(scene_, pixels, range.begin, range.end, film, c, tree, options_.aovs);
-            else render_reference_tile(scene_, tile, range.begin, range.end, film, c, tree, options_.aovs);
+            if (adaptive)
+                render_reference_pixels(scene_, pixels, range.begin, range.end, film, c, tree, options_.aovs, photons_.get());
+            else
+                render_reference_tile(scene_, tile, range.begin, range.end, film, c, tree, options_.aovs, photons_.get());
         } else {
             auto& ws = workspaces_[std::size_t(worker)];
             if (!ws) {
@@ -104,10 +130,10 @@ void RenderSession::render_tiles(Film& film, SampleRange range, const std::funct
             }
             if (adaptive)
                 render_wavefront_pixels(scene_, context, tile, pixels, range.begin, range.end, options_.batch_paths,
-                                        options_.aovs, *ws, film, c);
+                                        options_.aovs, *ws, film, c, photons_.get());
             else
                 render_wavefront_tile(scene_, context, tile, range.begin, range.end, options_.batch_paths, options_.aovs,
-                                      *ws, film, c);
+                                      *ws, film, c, photons_.get());
         }
         if (tile_done) tile_done(uint64_t(tile.pixel_count()) * range.size());
     });
@@ -121,6 +147,7 @@ RenderResult RenderSession::result() const {
     result.isa = isa_;
     result.accel = accel_;
     result.bvh = bvh_.stats();
+    if (photons_) result.photon_maps_built = photons_->maps_built();
     return result;
 }
 

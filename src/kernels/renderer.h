@@ -32,6 +32,9 @@ struct RenderOptions {
     int threads = 0;                 // 0: one per hardware thread
     int tile_size = 16;              // pixels per tile side
     std::size_t batch_paths = 2048;  // camera paths per wavefront batch: queues sized to stay in L2
+    // With photons, the light paths whose photons are held at once (PhotonMaps::samples_per_batch):
+    // memory, never the image.
+    uint64_t photon_batch_paths = uint64_t(1) << 18;
     std::optional<Isa> isa;          // intersection kernels; empty: the best this CPU runs
     Accel accel = Accel::automatic;  // never changes the image, only how fast it comes
     BvhBuildOptions bvh;             // when a BVH is built (its `threads` is ignored: the render's are used)
@@ -46,6 +49,7 @@ struct RenderResult {
     Isa isa = Isa::scalar;  // kernels the wavefront integrator used
     Accel accel = Accel::brute;  // what `automatic` resolved to
     BvhStats bvh;                // when accel is bvh: the tree's size and build time
+    uint64_t photon_maps_built = 0;  // with photons: the samples whose photons some camera path gathered
 };
 
 // Samples [begin, end) of every pixel.
@@ -56,6 +60,7 @@ struct SampleRange {
 
 struct WavefrontWorkspace;
 class LightTracingPass;
+class PhotonMaps;
 
 // The film channels a render of `scene` with `aovs` needs: the AOVs' (aov_film_channels), then the
 // splat channels when the scene light-traces its caustics (Film::splat_channels).
@@ -91,6 +96,11 @@ private:
     // says are still sampled.
     void render_tiles(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done,
                       const AdaptiveState* adaptive);
+    // render_tiles, and with photons the light paths of the range first, batch by batch.
+    void render_camera_paths(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done,
+                             const AdaptiveState* adaptive);
+    // The light paths of `range` (splats, and with `photons` the photons of a batch).
+    void trace_light_paths(Film& film, SampleRange range, PhotonMaps* photons);
 
     const Scene& scene_;
     RenderOptions options_;
@@ -106,6 +116,7 @@ private:
     // Created by the worker that uses it, on first use, so its pages live near that core.
     std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces_;
     std::unique_ptr<LightTracingPass> light_tracing_;  // only when the scene light-traces caustics
+    std::unique_ptr<PhotonMaps> photons_;              // only when it merges photons too
     std::vector<std::vector<uint32_t>> sampled_pixels_;  // per worker: a tile's pixels still sampled (adaptive)
     double seconds_ = 0.0;
 };

@@ -60,7 +60,8 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     in.expect_object(j, path);
     in.check_keys(j, path, {"width", "height", "spp", "shadow_rays", "seed", "max_bounces", "rr_start_bounce",
                             "triangle_test", "sphere_test", "fresnel", "sampler", "light_sampling", "clamp_indirect",
-                            "caustics", "light_paths_per_pixel", "adaptive_threshold", "adaptive_min_spp"});
+                            "caustics", "light_paths_per_pixel", "photon_radius", "adaptive_threshold",
+                            "adaptive_min_spp"});
     RenderSettings s;
     const auto read_int = [&](const char* key, int& field, uint64_t lo, uint64_t hi) {
         if (const Json* v = in.optional(j, key)) field = int(in.integer(*v, member_path(path, key), lo, hi));
@@ -86,12 +87,20 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     read_choice("fresnel", s.accuracy.fresnel, parse_fresnel_model, "\"schlick\", \"exact\"");
     read_choice("sampler", s.estimator.sampler, parse_sampler, "\"independent\", \"stratified\", \"sobol\"");
     read_choice("light_sampling", s.estimator.light_sampling, parse_light_sampling, "\"nee\", \"mis\"");
-    read_choice("caustics", s.estimator.caustics, parse_caustic_paths, "\"path\", \"light_tracing\"");
+    read_choice("caustics", s.estimator.caustics, parse_caustic_paths,
+                "\"path\", \"light_tracing\", \"photons\"");
     if (const Json* ratio = in.optional(j, "light_paths_per_pixel")) {
         const std::string ratio_path = member_path(path, "light_paths_per_pixel");
         s.estimator.light_paths_per_pixel = in.number(*ratio, ratio_path);
         if (!(s.estimator.light_paths_per_pixel >= 1.0f / 1024 && s.estimator.light_paths_per_pixel <= 64.0f))
             in.fail(ratio_path, "must be from 1/1024 to 64, got " + describe(*ratio));
+    }
+    if (const Json* radius = in.optional(j, "photon_radius")) {
+        const std::string radius_path = member_path(path, "photon_radius");
+        s.estimator.photon_radius = in.number(*radius, radius_path);
+        if (!(s.estimator.photon_radius > 0.0f && s.estimator.photon_radius <= kPhotonRadiusMax))
+            in.fail(radius_path, "must be greater than 0 and at most 1e18 (leave it out for the automatic radius), got " +
+                                     describe(*radius));
     }
     if (const Json* clamp = in.optional(j, "clamp_indirect")) {
         const std::string clamp_path = member_path(path, "clamp_indirect");

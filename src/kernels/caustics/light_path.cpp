@@ -53,8 +53,8 @@ uint64_t light_paths_per_sample(const RenderSettings& s) {
     return std::max<uint64_t>(1, uint64_t(std::llround(paths)));
 }
 
-LightPathTracer::LightPathTracer(const Scene& scene, const BvhView* bvh)
-    : scene_(scene), bvh_(bvh), inverse_path_count_(float(1.0 / double(light_paths_per_sample(scene.settings)))) {}
+LightPathTracer::LightPathTracer(const Scene& scene, const BvhView* bvh, bool records_photons)
+    : scene_(scene), bvh_(bvh), records_photons_(records_photons), inverse_path_count_(float(1.0 / double(light_paths_per_sample(scene.settings)))) {}
 
 Hit LightPathTracer::closest(const Ray& ray) const {
     return bvh_ ? bvh_intersect_closest(*bvh_, scene_.settings.accuracy, ray) : intersect_closest(scene_, ray);
@@ -91,6 +91,7 @@ LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const Ligh
         // A diffuse first bounce is direct light: the camera paths' light samples estimate it.
         if (vertex == 1) return out;
         out.connection = connect_to_camera(surface, m, ray.direction, at.power * at.weight);
+        if (records_photons_) out.photon = photon_at(surface, m, vertex, ray.direction, at.power * at.weight);
     }
     // Camera paths shade no vertex from max_bounces on, so none could meet the light after more.
     if (int(vertex) + 1 >= settings.max_bounces) return out;
@@ -118,7 +119,7 @@ LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const Ligh
 }
 
 void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats,
-                            std::vector<LightPathVertexRecord>* record) const {
+                            std::vector<LightPathVertexRecord>* record, std::vector<Photon>* photons) const {
     const uint64_t key = light_path_key(scene_.settings.seed, index, sample);
     std::optional<LightRay> ray = start(key);
     ++counts.light_paths;
@@ -133,6 +134,7 @@ void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, 
             was_blocked = blocked(v.connection->ray, v.connection->tmax);
             if (!was_blocked) splats.push_back(v.connection->splat);
         }
+        if (photons && v.photon) photons->push_back(*v.photon);
         if (record) {
             const SurfacePoint s = surface_at(scene_, ray->ray, hit);
             record->push_back({vertex, hit, s.material, s.position, ray->power * ray->weight,
@@ -162,8 +164,7 @@ std::optional<CameraConnection> LightPathTracer::connect_to_camera(const Surface
     const glm::vec3 wi = -arriving;
     const float cos_i = glm::dot(at.normal, wi), cos_o = glm::dot(at.normal, wo);
     if (!(cos_i > 0.0f && cos_o > 0.0f)) return std::nullopt;  // lit from behind, as the camera sees it
-    const DiffuseBsdfAtView bsdf(m, at.shading_normal, wo);
-    const glm::vec3 f = at.smooth ? folded_diffuse(bsdf, at.normal, at.shading_normal, wi, cos_i) / cos_i : bsdf(wi, cos_i);
+    const glm::vec3 f = diffuse_bsdf_for_power(DiffuseBsdfAtView(m, at.shading_normal, wo), at, wi, cos_i);
 
     const glm::vec3 span = camera.eye() - at.ray_origin;
     const float tmax = glm::length(span);
@@ -171,6 +172,19 @@ std::optional<CameraConnection> LightPathTracer::connect_to_camera(const Surface
     const uint32_t pixel = uint32_t(film->y) * uint32_t(scene_.settings.width) + uint32_t(film->x);
     return CameraConnection{{at.ray_origin, span / tmax}, tmax,
                             {pixel, power * f * (cos_o / dist2 * film->importance * inverse_path_count_)}};
+}
+
+// A photon for the camera paths that see this surface through a mirror or glass
+// (kernels/photons): only where one could gather it, on a surface that reflects light, at a
+// vertex from which a camera path of at least two vertices stays within max_bounces
+// (photon_gather.h: j - 1 + vertex < max_bounces with j >= 2), and with a finite power.
+std::optional<Photon> LightPathTracer::photon_at(const SurfacePoint& surface, const Material& m, uint32_t vertex,
+                                                 const glm::vec3& arriving, const glm::vec3& power) const {
+    if (!gathers_direct_light(m) || int(vertex) + 1 >= scene_.settings.max_bounces) return std::nullopt;
+    const glm::vec3 p = power * inverse_path_count_;
+    if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))) return std::nullopt;
+    const glm::vec3 facing = glm::dot(arriving, surface.normal) < 0.0f ? surface.normal : -surface.normal;
+    return Photon{surface.position, arriving, facing, p, vertex};
 }
 
 }  // namespace wt

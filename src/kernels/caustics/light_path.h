@@ -17,6 +17,7 @@
 
 #include "core/scene.h"
 #include "kernels/accel/bvh_view.h"
+#include "kernels/photons/photon.h"
 #include "kernels/render_stats.h"
 
 namespace wt {
@@ -49,10 +50,12 @@ struct CameraConnection {
     CameraSplat splat;
 };
 
-// What a light path does at one vertex: the connection to the camera, if any, and the ray that
-// continues the path, if it goes on.
+// What a light path does at one vertex: the connection to the camera, if any, the photon it
+// leaves (only for a tracer that records photons), and the ray that continues the path, if it
+// goes on.
 struct LightVertex {
     std::optional<CameraConnection> connection;
+    std::optional<Photon> photon;
     std::optional<LightRay> next;
 };
 
@@ -74,7 +77,8 @@ struct LightPathVertexRecord {
 class LightPathTracer {
 public:
     // `bvh`: the scene's BVH, or null for the flat list (kernels/scene_intersect.h); trace() alone reads it.
-    LightPathTracer(const Scene& scene, const BvhView* bvh);
+    // `records_photons`: at_vertex also returns the photons (Scene::merges_photons).
+    LightPathTracer(const Scene& scene, const BvhView* bvh, bool records_photons = false);
 
     // The first ray of the path with random-number key `key` (light_path_key), if it leaves its light.
     std::optional<LightRay> start(uint64_t key) const;
@@ -85,18 +89,22 @@ public:
     // each diffuse vertex the camera sees, if the path's first bounce was specular. The values are
     // already divided by the number of paths per sample, so the film divides the splat sums by
     // the samples alone.
-    // `record`, if given, receives every vertex.
+    // `record`, if given, receives every vertex; `photons`, if given, the path's photons in
+    // vertex order (a tracer that records them).
     void trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats,
-               std::vector<LightPathVertexRecord>* record = nullptr) const;
+               std::vector<LightPathVertexRecord>* record = nullptr, std::vector<Photon>* photons = nullptr) const;
 
 private:
     std::optional<CameraConnection> connect_to_camera(const SurfacePoint& surface, const Material& m,
                                                       const glm::vec3& arriving, const glm::vec3& power) const;
+    std::optional<Photon> photon_at(const SurfacePoint& surface, const Material& m, uint32_t vertex,
+                                    const glm::vec3& arriving, const glm::vec3& power) const;
     Hit closest(const Ray& ray) const;
     bool blocked(const Ray& ray, float tmax) const;
 
     const Scene& scene_;
     const BvhView* bvh_;
+    bool records_photons_;
     float inverse_path_count_;
 };
 

@@ -1,5 +1,6 @@
 #include "kernels/caustics/light_tracing_pass.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -17,6 +18,7 @@ struct LightPathWorkspace {
     RayQueue rays, next_rays;
     HitQueue hits;
     ShadowQueue connections;
+    std::vector<std::pair<uint32_t, Photon>> photons;  // by vertex, then slot: sorted to the paths' order
 
     explicit LightPathWorkspace(std::size_t paths) {
         key.resize(paths), power_r.resize(paths), power_g.resize(paths), power_b.resize(paths);
@@ -34,7 +36,7 @@ std::size_t LightTracingPass::bytes_per_worker() {
 }
 
 LightTracingPass::LightTracingPass(const Scene& scene, const BvhView* bvh, int threads)
-    : scene_(scene), tracer_(scene, bvh), paths_per_sample_(light_paths_per_sample(scene.settings)),
+    : scene_(scene), tracer_(scene, bvh, scene.merges_photons), paths_per_sample_(light_paths_per_sample(scene.settings)),
       buffers_(std::size_t(threads)), workspaces_(std::size_t(threads)) {}
 
 LightTracingPass::~LightTracingPass() = default;
@@ -52,8 +54,9 @@ void LightTracingPass::flush(Film& film, std::vector<CameraSplat>& buffer, RayCo
 // in the same order per path as LightPathTracer::trace, so the same splats.
 void LightTracingPass::trace_item_wavefront(const IntersectContext& context, uint32_t sample, uint64_t first,
                                             uint64_t end, LightPathWorkspace& ws, std::vector<CameraSplat>& splats,
-                                            RayCounts& counts) const {
+                                            std::vector<Photon>* photons, RayCounts& counts) const {
     ws.rays.count = 0;
+    ws.photons.clear();
     for (uint64_t index = first; index < end; ++index) {
         const uint32_t slot = uint32_t(index - first);
         ws.key[slot] = light_path_key(scene_.settings.seed, index, sample);
@@ -76,6 +79,7 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, uin
             if (v.connection)
                 ws.connections.push(ShadowRay{v.connection->ray, v.connection->tmax, v.connection->splat.value},
                                     v.connection->splat.pixel);
+            if (photons && v.photon) ws.photons.emplace_back(slot, *v.photon);
             if (v.next) ws.next_rays.push(v.next->ray, v.next->weight, slot, 0);
         }
         counts.camera_connections += ws.connections.count;
@@ -89,26 +93,34 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, uin
         }
         std::swap(ws.rays, ws.next_rays);
     }
+    if (!photons) return;
+    // Collected vertex by vertex; a stable sort by path makes them path by path, each path's in
+    // vertex order: what trace() gives.
+    std::stable_sort(ws.photons.begin(), ws.photons.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& p : ws.photons) photons->push_back(p.second);
 }
 
 void LightTracingPass::render(Film& film, uint32_t sample_begin, uint32_t sample_end, ThreadPool& pool,
-                              std::vector<RayCounts>& counts, const IntersectContext* wavefront) {
+                              std::vector<RayCounts>& counts, const IntersectContext* wavefront, PhotonMaps* photons) {
     if (!film.has_splats()) throw std::invalid_argument("render: light tracing needs a film with splat channels");
     if (sample_end <= sample_begin) return;
     const uint64_t items_per_sample = (paths_per_sample_ + kPathsPerItem - 1) / kPathsPerItem;
     const uint64_t items = items_per_sample * (sample_end - sample_begin);
+    if (photons) photons->start_batch(sample_begin, sample_end, items_per_sample);
     pool.parallel_for(std::size_t(items), [&](std::size_t item, int worker) {
         const uint32_t sample = sample_begin + uint32_t(item / items_per_sample);
         const uint64_t first = (item % items_per_sample) * kPathsPerItem;
         const uint64_t end = std::min(paths_per_sample_, first + kPathsPerItem);
         RayCounts& c = counts[std::size_t(worker)];
         std::vector<CameraSplat>& buffer = buffers_[std::size_t(worker)];
+        std::vector<Photon>* item_photons = photons ? &photons->photons(item) : nullptr;
         if (wavefront) {
             auto& ws = workspaces_[std::size_t(worker)];
             if (!ws) ws = std::make_unique<LightPathWorkspace>(std::size_t(kPathsPerItem));
-            trace_item_wavefront(*wavefront, sample, first, end, *ws, buffer, c);
+            trace_item_wavefront(*wavefront, sample, first, end, *ws, buffer, item_photons, c);
         } else {
-            for (uint64_t path = first; path < end; ++path) tracer_.trace(path, sample, c, buffer);
+            for (uint64_t path = first; path < end; ++path) tracer_.trace(path, sample, c, buffer, nullptr, item_photons);
         }
         if (buffer.size() >= kBufferedSplats) flush(film, buffer, c);
     });

@@ -8,6 +8,10 @@
 // With the wavefront integrator the paths of a work item advance together through queues, their
 // rays traced by the SIMD kernels of the intersect and shadow stages; with the reference
 // integrator one path at a time by the scalar code. Both run LightPathTracer's vertex code.
+//
+// When the scene merges photons, the same paths also leave their photons in the photon maps of
+// the samples traced (kernels/photons/photon_maps.h), each work item's in its own list, in light
+// path key order either way.
 
 #include <cstdint>
 #include <memory>
@@ -17,6 +21,7 @@
 #include "core/film/film.h"
 #include "core/thread_pool.h"
 #include "kernels/caustics/light_path.h"
+#include "kernels/photons/photon_maps.h"
 #include "kernels/wavefront/stages.h"
 
 namespace wt {
@@ -38,12 +43,14 @@ public:
     // Traces every light path of samples [sample_begin, sample_end) and adds their splats and the
     // samples' count to `film` (which must have splat channels); counts go to counts[worker].
     // `wavefront`: the kernels and what they trace against, or null to trace one path at a time.
+    // `photons` (the scene merges photons): starts their batch for these samples and fills it.
     void render(Film& film, uint32_t sample_begin, uint32_t sample_end, ThreadPool& pool, std::vector<RayCounts>& counts,
-                const IntersectContext* wavefront);
+                const IntersectContext* wavefront, PhotonMaps* photons = nullptr);
 
 private:
     void trace_item_wavefront(const IntersectContext& context, uint32_t sample, uint64_t first, uint64_t end,
-                              LightPathWorkspace& ws, std::vector<CameraSplat>& splats, RayCounts& counts) const;
+                              LightPathWorkspace& ws, std::vector<CameraSplat>& splats, std::vector<Photon>* photons,
+                              RayCounts& counts) const;
     void flush(Film& film, std::vector<CameraSplat>& buffer, RayCounts& counts);
 
     const Scene& scene_;

@@ -40,9 +40,9 @@ struct RayQueue {
     AlignedVector<float> throughput_r, throughput_g, throughput_b;
     AlignedVector<uint32_t> path;          // slot in the PathTable
     // Bit flags: kCountEmission (PathContinuation::count_emission; camera rays too) and
-    // kFirstHitDiffuse (PathContinuation::first_hit_diffuse).
+    // kSpecularLightElsewhere (PathContinuation::specular_light_elsewhere).
     AlignedVector<uint8_t> count_emission;
-    static constexpr uint8_t kCountEmission = 1, kFirstHitDiffuse = 2;
+    static constexpr uint8_t kCountEmission = 1, kSpecularLightElsewhere = 2;
     AlignedVector<float> bsdf_pdf;         // mis only: PathContinuation::bsdf_pdf
     std::size_t count = 0;
 
@@ -63,7 +63,7 @@ struct RayQueue {
     void push(const PathContinuation& next, uint32_t slot) {
         if constexpr (kWithPdf) bsdf_pdf[count] = next.bsdf_pdf;
         push(next.ray, next.throughput, slot,
-             uint8_t((next.count_emission ? kCountEmission : 0) | (next.first_hit_diffuse ? kFirstHitDiffuse : 0)));
+             uint8_t((next.count_emission ? kCountEmission : 0) | (next.specular_light_elsewhere ? kSpecularLightElsewhere : 0)));
     }
     Ray ray(std::size_t i) const { return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}; }
     glm::vec3 throughput(std::size_t i) const { return {throughput_r[i], throughput_g[i], throughput_b[i]}; }

@@ -7,15 +7,18 @@
 
 #include "core/first_surface.h"
 #include "core/path_vertex.h"
+#include "kernels/photons/photon_gather.h"
+#include "kernels/photons/photon_maps.h"
 #include "kernels/wavefront/stages.h"
 
 namespace wt {
 
 // The same vertex logic as trace_reference_path, in the same order (emission, then light
-// samples, then the continuation), so both integrators add a path's terms identically.
+// samples, then the continuation; the photons' estimate, where one is gathered, after the
+// emission), so both integrators add a path's terms identically.
 template <typename E, bool kRecordAovs>
 void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
-                 RayQueue& next_rays, ShadowQueue& shadows) {
+                 RayQueue& next_rays, ShadowQueue& shadows, const PhotonMaps* photons) {
     const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
     const bool has_lights = !scene.lights.empty();
     next_rays.count = 0;
@@ -38,13 +41,17 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         if (flags & RayQueue::kCountEmission)
             paths.add_radiance(slot, emission_added<E>(scene, m, surface, ray, hit.t, throughput,
                                                        E::mis ? rays.bsdf_pdf[i] : 0.0f, bounce));
+        const bool elsewhere = flags & RayQueue::kSpecularLightElsewhere;
+        if (photons && gathers_photons(scene, m, bounce, elsewhere))
+            paths.add_radiance(slot, throughput * gather_photons(photons->map(path.sample), m, surface, ray.direction,
+                                                                 photon_vertex_limit(scene, bounce))
+                                                      .radiance);
         if (has_lights && gathers_direct_light(m)) {
             const DirectLightSampler<E> lights(scene, m, surface, light_sampling_point(surface, ray.direction),
                                                ray.direction, throughput, path, bounce, shadow_ray_count);
             lights.sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
         }
-        const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce,
-                                           flags & RayQueue::kFirstHitDiffuse);
+        const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere);
         if (next) next_rays.push<E::mis>(*next, slot);
     }
 }
@@ -52,6 +59,6 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
 
 #define WT_SHADE_QUEUE_SIGNATURE(E, record_aovs)                                                                          \
     void shade_queue<E, record_aovs>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&, RayQueue&,     \
-                                     ShadowQueue&)
+                                     ShadowQueue&, const PhotonMaps*)
 
 }  // namespace wt

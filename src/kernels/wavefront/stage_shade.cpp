@@ -9,14 +9,14 @@ WT_FOR_EACH_OPTIONAL_ESTIMATOR(WT_DECLARE_SHADE_QUEUE)
 extern template WT_SHADE_QUEUE_SIGNATURE(DefaultEstimator, true);
 
 void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
-                 RayQueue& next_rays, ShadowQueue& shadows) {
+                 RayQueue& next_rays, ShadowQueue& shadows, const PhotonMaps* photons) {
     const bool record_aovs = !paths.first_surface.empty();
     with_estimator(scene.settings.estimator, [&](auto estimator) {
         using E = decltype(estimator);
         if (record_aovs)
-            shade_queue<E, true>(scene, bounce, rays, hits, paths, next_rays, shadows);
+            shade_queue<E, true>(scene, bounce, rays, hits, paths, next_rays, shadows, photons);
         else
-            shade_queue<E, false>(scene, bounce, rays, hits, paths, next_rays, shadows);
+            shade_queue<E, false>(scene, bounce, rays, hits, paths, next_rays, shadows, photons);
     });
 }
 

@@ -11,6 +11,8 @@
 
 namespace wt {
 
+class PhotonMaps;
+
 // The generate and shade stages run the scene's estimator (core/estimator.h), chosen once per
 // call, for the whole queue.
 
@@ -35,9 +37,11 @@ struct IntersectContext {
 void intersect_closest_stage(const IntersectContext& context, const RayQueue& rays, HitQueue& hits, bool coherent);
 
 // Emission, light samples into `shadows`, and surviving continuations into `next_rays`; with
-// AOVs (a non-empty `paths.first_surface`), each path's first surface (core/first_surface.h).
+// AOVs (a non-empty `paths.first_surface`), each path's first surface (core/first_surface.h);
+// with `photons` (the batch's maps, when the scene merges photons), their estimate where a path
+// gathers it (gathers_photons).
 void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
-                 RayQueue& next_rays, ShadowQueue& shadows);
+                 RayQueue& next_rays, ShadowQueue& shadows, const PhotonMaps* photons);
 
 // Any-hit test of every shadow ray; unblocked ones add their contribution to their path.
 void shadow_stage(const IntersectContext& context, ShadowQueue& shadows, PathTable& paths);

@@ -13,7 +13,7 @@ namespace {
 template <typename Generate>
 void render_batches(const Scene& scene, const IntersectContext& context, uint32_t sample_begin, uint32_t sample_end,
                     uint32_t step, const AovSelection& aovs, WavefrontWorkspace& ws, Film& film, RayCounts& counts,
-                    Generate&& generate) {
+                    const PhotonMaps* photons, Generate&& generate) {
     const bool with_aovs = aovs.needs_path_data();
     for (uint32_t begin = sample_begin; begin < sample_end; begin += step) {
         const uint32_t end = std::min(sample_end, begin + step);
@@ -23,7 +23,7 @@ void render_batches(const Scene& scene, const IntersectContext& context, uint32_
 
         for (uint32_t bounce = 0; ws.rays.count > 0; ++bounce) {
             intersect_closest_stage(context, ws.rays, ws.hits, bounce == 0);
-            shade_stage(scene, bounce, ws.rays, ws.hits, ws.paths, ws.next_rays, ws.shadows);
+            shade_stage(scene, bounce, ws.rays, ws.hits, ws.paths, ws.next_rays, ws.shadows, photons);
             shadow_stage(context, ws.shadows, ws.paths);
             counts.shadow_rays += ws.shadows.count;
             counts.bounce_rays += ws.next_rays.count;
@@ -45,22 +45,23 @@ void render_batches(const Scene& scene, const IntersectContext& context, uint32_
 
 void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, uint32_t sample_begin,
                            uint32_t sample_end, std::size_t batch_paths, const AovSelection& aovs,
-                           WavefrontWorkspace& ws, Film& film, RayCounts& counts) {
+                           WavefrontWorkspace& ws, Film& film, RayCounts& counts, const PhotonMaps* photons) {
     const uint32_t step = samples_per_batch(tile, batch_paths, sample_end - sample_begin);
-    render_batches(scene, context, sample_begin, sample_end, step, aovs, ws, film, counts, [&](uint32_t b, uint32_t e) {
+    render_batches(scene, context, sample_begin, sample_end, step, aovs, ws, film, counts, photons, [&](uint32_t b, uint32_t e) {
         generate_camera_rays(scene, tile, b, e, ws.paths, ws.rays);
     });
 }
 
 void render_wavefront_pixels(const Scene& scene, const IntersectContext& context, const Tile& tile, TilePixels pixels,
                              uint32_t sample_begin, uint32_t sample_end, std::size_t batch_paths,
-                             const AovSelection& aovs, WavefrontWorkspace& ws, Film& film, RayCounts& counts) {
+                             const AovSelection& aovs, WavefrontWorkspace& ws, Film& film, RayCounts& counts,
+                             const PhotonMaps* photons) {
     // The whole tile's batch, shared by fewer pixels: more of their samples per batch, and
     // never more paths than the workspace was sized for (memory_estimate.h).
     const uint32_t samples = sample_end - sample_begin;
     const std::size_t budget = std::size_t(tile.pixel_count()) * samples_per_batch(tile, batch_paths, samples);
     const uint32_t step = uint32_t(std::min<std::size_t>(samples, std::max<std::size_t>(1, budget / pixels.count)));
-    render_batches(scene, context, sample_begin, sample_end, step, aovs, ws, film, counts, [&](uint32_t b, uint32_t e) {
+    render_batches(scene, context, sample_begin, sample_end, step, aovs, ws, film, counts, photons, [&](uint32_t b, uint32_t e) {
         generate_camera_rays(scene, pixels, b, e, ws.paths, ws.rays);
     });
 }

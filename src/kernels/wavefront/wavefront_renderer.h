@@ -20,14 +20,16 @@ inline uint32_t samples_per_batch(const Tile& tile, std::size_t batch_paths, uin
 }
 
 // Samples [sample_begin, sample_end) of every pixel of the tile, with the AOVs the film has
-// channels for (the workspace must then have been made with_aovs).
+// channels for (the workspace must then have been made with_aovs); `photons`: the photon maps
+// of the samples' batch when the scene merges photons, else null.
 void render_wavefront_tile(const Scene& scene, const IntersectContext& context, const Tile& tile, uint32_t sample_begin,
                            uint32_t sample_end, std::size_t batch_paths, const AovSelection& aovs,
-                           WavefrontWorkspace& workspace, Film& film, RayCounts& counts);
+                           WavefrontWorkspace& workspace, Film& film, RayCounts& counts, const PhotonMaps* photons);
 
 // The same for some of the tile's pixels (at least one): adaptive sampling's pixels still sampled.
 void render_wavefront_pixels(const Scene& scene, const IntersectContext& context, const Tile& tile, TilePixels pixels,
                              uint32_t sample_begin, uint32_t sample_end, std::size_t batch_paths,
-                             const AovSelection& aovs, WavefrontWorkspace& workspace, Film& film, RayCounts& counts);
+                             const AovSelection& aovs, WavefrontWorkspace& workspace, Film& film, RayCounts& counts,
+                             const PhotonMaps* photons);
 
 }  // namespace wt

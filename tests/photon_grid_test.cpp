@@ -1,0 +1,178 @@
+// The photon grid against a brute-force search of every photon (the same set, the same estimate
+// bits), the radius schedule against its closed form, the automatic and requested radii, and the
+// scene file's refusal of bad radii.
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "kernels/photons/photon_gather.h"
+#include "kernels/photons/photon_grid.h"
+#include "kernels/photons/photon_radius.h"
+#include "scene_test_helpers.h"
+#include "test_scenes.h"
+
+namespace wt {
+namespace {
+
+// Photons in clusters about a few centres, and on a plane (z = 0) so that gathers see many.
+std::vector<Photon> random_photons(std::size_t n, float scale, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::vector<Photon> photons;
+    for (std::size_t i = 0; i < n; ++i) {
+        const float spread = i % 3 == 0 ? 0.05f : 1.0f;
+        const glm::vec3 centre = i % 3 == 0 ? glm::vec3(0.3f, -0.2f, 0.0f) : glm::vec3(0.0f);
+        const glm::vec3 p = (centre + spread * glm::vec3(u(rng), u(rng), i % 2 ? 0.0f : 0.1f * u(rng))) * scale;
+        const glm::vec3 arriving = glm::normalize(glm::vec3(u(rng), u(rng), -1.0f - std::fabs(u(rng))));
+        photons.push_back({p, arriving, {0, 0, 1}, glm::vec3(0.5f + u(rng), 1.0f, 2.0f) * 1e-3f, 2 + uint32_t(i % 3)});
+    }
+    return photons;
+}
+
+// Every photon within the radius, by index: the grid's (sorted) against a loop over all.
+void expect_grid_matches_brute_force(const std::vector<Photon>& photons, float radius, float scale, uint32_t seed) {
+    const std::vector<Photon> second(photons.begin() + photons.size() / 2, photons.end());
+    const std::vector<Photon> first(photons.begin(), photons.begin() + photons.size() / 2);
+    const PhotonGrid grid({&first, &second}, radius);  // two parts: indices run on across them
+    ASSERT_EQ(grid.size(), photons.size());
+    Material floor;
+    floor.albedo = glm::vec3(0.7f);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::size_t found_total = 0;
+    for (int q = 0; q < 300; ++q) {
+        // Query points at photons (exact hits and the boundary's neighbourhood) and anywhere.
+        glm::vec3 x = glm::vec3(u(rng), u(rng), 0.0f) * scale;
+        if (q % 3 == 0) x = photons[std::size_t(q) % photons.size()].position;
+        if (q % 3 == 1) x = photons[std::size_t(q) % photons.size()].position + glm::vec3(radius, 0.0f, 0.0f);
+        std::vector<uint32_t> from_grid, from_all;
+        grid.for_each_within(x, [&](const Photon&, uint32_t i) { from_grid.push_back(i); });
+        const float r2 = radius * radius;
+        for (uint32_t i = 0; i < photons.size(); ++i) {
+            const glm::vec3 v = photons[i].position - x;
+            if (glm::dot(v, v) <= r2) from_all.push_back(i);
+        }
+        std::sort(from_grid.begin(), from_grid.end());
+        ASSERT_EQ(from_grid, from_all) << "query " << q;
+        found_total += from_all.size();
+
+        SurfacePoint s{x, glm::vec3(0.0f), {0, 0, 1}, {0, 0, 1}, 0, false};
+        const glm::vec3 d = glm::normalize(glm::vec3(0.2f, 0.5f, -1.0f));
+        const PhotonGather g = gather_photons(grid, floor, s, d, 3);
+        const PhotonGather all = gather_photons_from(
+            [&](auto&& visit) {
+                for (uint32_t i : from_all) visit(photons[i], i);
+            },
+            radius, floor, s, d, 3);
+        ASSERT_EQ(g.photons, all.photons) << "query " << q;
+        ASSERT_EQ(g.radiance, all.radiance) << "query " << q;  // bit for bit: the sum is exact
+    }
+    // A third of the queries sit on a photon and find it; more means they found neighbours too.
+    EXPECT_GT(found_total, 100u) << "the queries must find photons beyond their own";
+}
+
+TEST(PhotonGrid, FindsExactlyThePhotonsABruteForceSearchFinds) {
+    expect_grid_matches_brute_force(random_photons(4000, 1.0f, 1), 0.03f, 1.0f, 2);
+}
+
+// Far from the origin with a radius small beside the coordinates (cells of large index), and with
+// so few photons that the table has a handful of buckets: the eight cells of a lookup share
+// buckets, which must still be read once each.
+TEST(PhotonGrid, FarFromTheOriginAndWithBucketsSharedByCells) {
+    expect_grid_matches_brute_force(random_photons(3000, 1e4f, 3), 5.0f, 1e4f, 4);
+    expect_grid_matches_brute_force(random_photons(6, 1.0f, 5), 0.5f, 1.0f, 6);
+}
+
+// Photons just inside the radius along each axis of many points: wherever the cell boundaries
+// fall, a lookup reaches every cell that can hold one of them.
+TEST(PhotonGrid, FindsPhotonsAtTheRadiusWhereverTheCellBoundariesFall) {
+    const float r = 0.01f, inside = r * (1.0f - 0x1p-20f);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<glm::vec3> centres;
+    std::vector<Photon> photons;
+    for (int i = 0; i < 4000; ++i) {
+        // On a lattice 10 r apart, jittered: no point sees another's photons.
+        const glm::vec3 c = glm::vec3(float(i % 20), float(i / 20 % 20), float(i / 400)) * (10.0f * r) +
+                            glm::vec3(u(rng), u(rng), u(rng)) * (2.0f * r);
+        centres.push_back(c);
+        for (int axis = 0; axis < 3; ++axis)
+            for (const float sign : {-1.0f, 1.0f}) {
+                glm::vec3 p = c;
+                p[axis] += sign * inside;
+                photons.push_back({p, {0, 0, -1}, {0, 0, 1}, glm::vec3(1.0f), 2});
+            }
+    }
+    const PhotonGrid grid({&photons}, r);
+    for (std::size_t i = 0; i < centres.size(); ++i) {
+        int found = 0;
+        grid.for_each_within(centres[i], [&](const Photon&, uint32_t index) { found += index / 6 == i; });
+        ASSERT_EQ(found, 6) << "point " << i;
+    }
+}
+
+TEST(PhotonGrid, GatherCountsOnlyPhotonsFromTheViewedSideWithinTheVertexLimit) {
+    Material floor;
+    floor.albedo = glm::vec3(0.5f);
+    const glm::vec3 down(0, 0, -1);
+    std::vector<Photon> photons = {
+        {{0, 0, 0}, down, {0, 0, 1}, glm::vec3(1.0f), 2},              // counted
+        {{0.1f, 0, 0}, -down, {0, 0, -1}, glm::vec3(1.0f), 2},         // arrived from below
+        {{0, 0.1f, 0}, down, {0, 0, 1}, glm::vec3(1.0f), 4},           // too many vertices for the limit 3
+        {{0, 0, 0.05f}, glm::vec3(1, 0, 0), {-1, 0, 0}, glm::vec3(1.0f), 2},  // on a wall at right angles
+    };
+    const PhotonGrid grid({&photons}, 0.2f);
+    const SurfacePoint s{{0, 0, 0}, glm::vec3(0.0f), {0, 0, 1}, {0, 0, 1}, 0, false};
+    const PhotonGather g = gather_photons(grid, floor, s, glm::normalize(glm::vec3(0, 1, -1)), 3);
+    EXPECT_EQ(g.photons, 1u);
+    // rho / pi * power / (pi r^2), in float as the gather rounds it.
+    const double expected = 0.5 / M_PI / (M_PI * 0.2 * 0.2);
+    EXPECT_NEAR(g.radiance.x, expected, 1e-6 * expected);
+    EXPECT_EQ(gather_photons(grid, floor, s, glm::normalize(glm::vec3(0, 1, -1)), 4).photons, 2u);
+}
+
+// r_s^2 / r_0^2 = prod_{i=1}^{s} (i + alpha) / (i + 1) = Gamma(s + 1 + alpha) / (Gamma(1 + alpha) Gamma(s + 2)),
+// to the rounding of thousands of products and of lgamma's large values (about 1e-11).
+TEST(PhotonRadius, ScheduleIsAPureFunctionOfTheSampleAndMatchesItsClosedForm) {
+    PhotonRadiusSchedule walked(0.5);
+    const double a = kPhotonRadiusAlpha;
+    for (uint32_t s : {0u, 1u, 2u, 7u, 100u, 5000u, 3u, 100u}) {
+        const double closed = 0.25 * std::exp(std::lgamma(s + 1 + a) - std::lgamma(1 + a) - std::lgamma(s + 2.0));
+        EXPECT_NEAR(walked.squared(s), closed, 1e-10 * closed) << "sample " << s;
+        EXPECT_EQ(walked.squared(s), PhotonRadiusSchedule(0.5).squared(s)) << "sample " << s << ": memory showed";
+    }
+    EXPECT_EQ(walked.squared(0), 0.25);
+    EXPECT_LT(walked.squared(1), walked.squared(0));
+}
+
+TEST(PhotonRadius, RequestedRadiusIsUsedUpToTheScenesDiagonalAndTheAutomaticOneFollowsThePixels) {
+    SceneDescription d = test::hexroom(40, 30, 1);
+    d.settings.estimator.photon_radius = 0.05f;
+    EXPECT_FLOAT_EQ(float(initial_photon_radius(build_scene(d))), 0.05f);
+    d.settings.estimator.photon_radius = 1e18f;
+    const double diagonal = initial_photon_radius(build_scene(d));
+    EXPECT_LT(diagonal, 1e3);
+    EXPECT_GT(diagonal, 1.0);
+    d.settings.estimator.photon_radius = 0.0f;
+    const double automatic = initial_photon_radius(build_scene(d));
+    EXPECT_GT(automatic, 0.0);
+    EXPECT_LT(automatic, 0.1 * diagonal);
+    d.settings.width = 80, d.settings.height = 60;  // pixels half as wide: half the radius
+    EXPECT_NEAR(initial_photon_radius(build_scene(d)), 0.5 * automatic, 1e-3 * automatic);
+}
+
+TEST(PhotonRadius, SceneFileRefusesARadiusThatIsNotPositiveOrTooLarge) {
+    for (const double bad : {0.0, -1.0, 1e19})
+        expect_scene_error(mutated([&](Json& j) { j["render"]["photon_radius"] = bad; }), "render.photon_radius: must be greater than 0");
+    expect_scene_error(mutated([](Json& j) { j["render"]["caustics"] = "photon"; }),
+                       "render.caustics: must be one of \"path\", \"light_tracing\", \"photons\"");
+    const SceneDescription ok = parse_scene_json(mutated([](Json& j) { j["render"]["photon_radius"] = 0.25; }), "ok.json");
+    EXPECT_EQ(ok.settings.estimator.photon_radius, 0.25f);
+}
+
+}  // namespace
+}  // namespace wt
