@@ -277,6 +277,11 @@ TEST(MicrofacetFurnace, EnergyNeverAboveOneAndTheKnownLossAtRoughnessOne) {
                 EXPECT_LT(a.mean, theta < 1.0f ? 0.9 : 0.6) << theta;
                 EXPECT_GT(a.mean, 0.25) << theta;
             }
+            // At alpha 1 D is uniform (1 / pi) and at normal incidence G1 = 1, so the albedo is
+            // the integral of G2 over the reflected visible normals: 1 - ln 2 in closed form.
+            if (roughness == 1.0f && theta == 0.0f) {
+                EXPECT_NEAR(a.mean, 1.0 - std::log(2.0), 4.0 * a.standard_error);
+            }
         }
     }
     for (const float ior : {1.33f, 1.5f, 4.0f})

@@ -2,10 +2,11 @@
 // The light samples of a rough vertex (rough_conductor, rough_glass): DirectLightSampler's
 // estimate with the microfacet BSDF in place of the diffuse one, and with rough glass also
 // towards lights on the far side of the surface (its refraction lobe), from an origin moved off
-// the surface on that side. With mis, weighted by the power heuristic against the BSDF's own
-// pdf of the direction (MicrofacetBsdfAtView::pdf), as continue_path passes it on for the
-// emission the BSDF sample may find. Without mis the BSDF samples' emission is not counted after
-// a rough bounce, and these samples alone estimate the direct light, on both sides.
+// the surface on that side. Weighted by the power heuristic against the BSDF's own pdf of the
+// direction (MicrofacetBsdfAtView::pdf), which continue_path passes on for the emission the BSDF
+// sample finds, with nee as with mis: a sharp lobe's light is found by BSDF samples, not by
+// light samples (uniform over the lights' area, they almost never land in a narrow lobe), so
+// light samples alone would converge too slowly to be of use. Diffuse vertices keep nee's rule.
 //
 // The same random dimensions as the diffuse samples (dim::light_first ...), so a vertex's light
 // samples are drawn as they would be for any material.
@@ -39,7 +40,7 @@ public:
           random_(path, bounce, count),
           count_(count),
           count_float_(float(count)),
-          bsdf_competes_(E::mis && int(bounce) + 1 < scene.settings.max_bounces),
+          bsdf_competes_(int(bounce) + 1 < scene.settings.max_bounces),
           clamp_limit_(E::clamps_indirect && is_indirect_light_sample(bounce)
                            ? scene.settings.estimator.clamp_indirect / float(count)
                            : INFINITY) {}
@@ -72,11 +73,9 @@ public:
         s.tmax = glm::length(span);
         s.ray.direction = span / s.tmax;
         s.contribution = throughput_ * f_cos * light.radiance * (cos_y / (dist2 * light.pdf_area * count_float_));
-        if constexpr (E::mis) {
-            if (bsdf_competes_) {
-                const float light_pdf = light.pdf_area * dist2 / cos_y;  // per unit solid angle
-                s.contribution *= power_heuristic(count_float_ * light_pdf, bsdf_.pdf(wi));
-            }
+        if (bsdf_competes_) {
+            const float light_pdf = light.pdf_area * dist2 / cos_y;  // per unit solid angle
+            s.contribution *= power_heuristic(count_float_ * light_pdf, bsdf_.pdf(wi));
         }
         if constexpr (E::clamps_indirect) s.contribution = clamped_per_channel(s.contribution, clamp_limit_);
         return true;

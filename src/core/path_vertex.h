@@ -85,7 +85,8 @@ template <typename E>
 inline glm::vec3 emission_added(const Scene& scene, const Material& m, const SurfacePoint& surface, const Ray& ray, float t,
                                 const glm::vec3& throughput, float bsdf_pdf, uint32_t bounce) {
     glm::vec3 e = throughput * emitted_towards(m, surface.normal, ray.direction);
-    if constexpr (E::mis) {
+    // (Without mis only a rough bounce passes a pdf: GlossyLightSampler weights its light samples.)
+    {
         if (bsdf_pdf > 0.0f && m.is_emissive()) {
             // The light samples' pdf for this point, per unit solid angle at the previous vertex.
             const float cos_light = -glm::dot(surface.normal, ray.direction);
@@ -242,7 +243,7 @@ struct PathContinuation {
     // photons were gathered, gathers_photons): so a path at bounce > 0 without it has met only
     // specular surfaces.
     bool specular_light_elsewhere;
-    float bsdf_pdf;  // mis: the direction's pdf if light samples competed for it, else 0 (emission_added)
+    float bsdf_pdf;  // mis, or a rough bounce: the direction's pdf if light samples competed for it, else 0 (emission_added)
 };
 
 // Whether the photons' estimate is added at this vertex: the first diffuse vertex, past the
@@ -290,10 +291,15 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
     // the camera path keeps every path through it (see PathContinuation).
     next.specular_light_elsewhere = specular_light_elsewhere || (!s.specular && !s.glossy &&
                                                                  (bounce == 0 ? scene.light_traces_caustics : scene.merges_photons));
-    next.count_emission = (E::mis || s.specular) && !(next.specular_light_elsewhere && s.specular);
+    // A rough lobe is always weighted against its light samples, nee or mis: light samples alone
+    // cannot find a sharp lobe's light, nor BSDF samples alone a small light (GlossyLightSampler).
+    next.count_emission = (E::mis || s.specular || s.glossy) && !(next.specular_light_elsewhere && s.specular);
     next.bsdf_pdf = 0.0f;
-    if constexpr (E::mis)
+    if constexpr (E::mis) {
         if (!s.specular) next.bsdf_pdf = s.glossy ? s.pdf : diffuse_direction_pdf(surface, d, s.direction);
+    } else if (s.glossy) {
+        next.bsdf_pdf = s.pdf;
+    }
     if (int(bounce) >= scene.settings.rr_start_bounce) {
         // Survival proportional to throughput keeps the estimator unbiased (weight / q) while
         // ending dim paths early; the cap keeps even bright paths terminating.

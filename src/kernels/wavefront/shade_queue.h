@@ -41,7 +41,8 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         const uint8_t flags = rays.count_emission[i];
         if (flags & RayQueue::kCountEmission)
             paths.add_radiance(slot, emission_added<E>(scene, m, surface, ray, hit.t, throughput,
-                                                       E::mis ? rays.bsdf_pdf[i] : 0.0f, bounce));
+                                                       E::mis || (flags & RayQueue::kRoughPdf) ? rays.bsdf_pdf[i] : 0.0f,
+                                                       bounce));
         const bool elsewhere = flags & RayQueue::kSpecularLightElsewhere;
         if (photons && gathers_photons(scene, m, bounce, elsewhere))
             paths.add_radiance(slot, throughput * gather_photons(photons->map(path.sample), m, surface, ray.direction,
