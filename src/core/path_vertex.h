@@ -85,7 +85,8 @@ template <typename E>
 inline glm::vec3 emission_added(const Scene& scene, const Material& m, const SurfacePoint& surface, const Ray& ray, float t,
                                 const glm::vec3& throughput, float bsdf_pdf, uint32_t bounce) {
     glm::vec3 e = throughput * emitted_towards(m, surface.normal, ray.direction);
-    if constexpr (E::mis) {
+    // (Without mis only a rough bounce passes a pdf: GlossyLightSampler weights its light samples.)
+    {
         if (bsdf_pdf > 0.0f && m.is_emissive()) {
             // The light samples' pdf for this point, per unit solid angle at the previous vertex.
             const float cos_light = -glm::dot(surface.normal, ray.direction);
@@ -219,6 +220,17 @@ private:
 // photons (Scene::merges_photons, kernels/photons/photon_gather.h) a path whose first hit is a
 // mirror or glass gathers the same light paths as photons at its first diffuse vertex, and
 // leaves the paths that end specular -> light from there on to them as well.
+//
+// A rough vertex R (rough conductor or glass) is on the camera paths' side of both splits: a
+// light path ends at R if R is its first bounce (so R -> light is the camera paths', by R's
+// light samples and, with mis, its BSDF samples), and never connects R to the camera nor leaves
+// a photon there; so a camera path keeps everything through R, and R sets no
+// specular_light_elsewhere. Each path still falls in exactly one part: with "diffuse" read as
+// the diffuse materials only and "specular" as mirror, glass and smooth conductor, the rules
+// above decide by the same three questions, and R answers "no" to both, so a path whose first
+// hit is R, or whose last bounce is R, is the camera paths' alone, and light paths through R
+// elsewhere (light -> specular -> ... R ... -> diffuse) are counted only by the light paths,
+// whose camera paths see that diffuse vertex first (or gather there) and drop them.
 struct PathContinuation {
     Ray ray;
     glm::vec3 throughput;
@@ -231,7 +243,7 @@ struct PathContinuation {
     // photons were gathered, gathers_photons): so a path at bounce > 0 without it has met only
     // specular surfaces.
     bool specular_light_elsewhere;
-    float bsdf_pdf;  // mis: the direction's pdf if light samples competed for it, else 0 (emission_added)
+    float bsdf_pdf;  // mis, or a rough bounce: the direction's pdf if light samples competed for it, else 0 (emission_added)
 };
 
 // Whether the photons' estimate is added at this vertex: the first diffuse vertex, past the
@@ -274,12 +286,20 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
     // A black surface (the light's back, an albedo-0 emitter) ends the path: nothing it could
     // gather would count.
     if (!(next.throughput.x > 0.0f || next.throughput.y > 0.0f || next.throughput.z > 0.0f)) return std::nullopt;
-    next.specular_light_elsewhere =
-        specular_light_elsewhere || (!s.specular && (bounce == 0 ? scene.light_traces_caustics : scene.merges_photons));
-    next.count_emission = (E::mis || s.specular) && !(next.specular_light_elsewhere && s.specular);
+    // Only a diffuse vertex hands the paths ending specular -> light on: light tracing connects
+    // those to the camera and photons land on those. A rough vertex (s.glossy) is neither, so
+    // the camera path keeps every path through it (see PathContinuation).
+    next.specular_light_elsewhere = specular_light_elsewhere || (!s.specular && !s.glossy &&
+                                                                 (bounce == 0 ? scene.light_traces_caustics : scene.merges_photons));
+    // A rough lobe is always weighted against its light samples, nee or mis: light samples alone
+    // cannot find a sharp lobe's light, nor BSDF samples alone a small light (GlossyLightSampler).
+    next.count_emission = (E::mis || s.specular || s.glossy) && !(next.specular_light_elsewhere && s.specular);
     next.bsdf_pdf = 0.0f;
-    if constexpr (E::mis)
-        if (!s.specular) next.bsdf_pdf = diffuse_direction_pdf(surface, d, s.direction);
+    if constexpr (E::mis) {
+        if (!s.specular) next.bsdf_pdf = s.glossy ? s.pdf : diffuse_direction_pdf(surface, d, s.direction);
+    } else if (s.glossy) {
+        next.bsdf_pdf = s.pdf;
+    }
     if (int(bounce) >= scene.settings.rr_start_bounce) {
         // Survival proportional to throughput keeps the estimator unbiased (weight / q) while
         // ending dim paths early; the cap keeps even bright paths terminating.

@@ -15,11 +15,17 @@
 
 namespace wt {
 
+// The specular types (mirror ... conductor) are consecutive, and the rough ones last, so each
+// test is one comparison. A scene file's "conductor" and "rough_glass" with roughness 0 load as
+// conductor and glass (core/materials/microfacet_material.h).
 enum class MaterialType : uint8_t {
-    lambertian,  // albedo / pi
-    oren_nayar,  // qualitative Oren-Nayar 1994, roughness sigma in radians
-    mirror,      // perfect specular reflection, tinted by reflectance
-    glass,       // smooth dielectric: Snell refraction, Schlick Fresnel, total internal reflection
+    lambertian,       // albedo / pi
+    oren_nayar,       // qualitative Oren-Nayar 1994, roughness sigma in radians
+    mirror,           // perfect specular reflection, tinted by reflectance
+    glass,            // smooth dielectric: Snell refraction, Schlick Fresnel, total internal reflection
+    conductor,        // smooth metal: perfect specular reflection with a conductor's Fresnel term
+    rough_conductor,  // GGX microfacet metal (core/materials/rough_conductor.h)
+    rough_glass,      // GGX microfacet dielectric, reflection and refraction (core/materials/rough_dielectric.h)
 };
 
 struct Material {
@@ -30,9 +36,16 @@ struct Material {
     glm::vec3 reflectance{1.0f};  // mirror
     float ior = 1.5f;             // glass, relative to the surrounding medium (vacuum)
     glm::vec3 emission{0.0f};     // radiance leaving the front face (diffuse materials only)
+    // conductor, rough_conductor, rough_glass (which also reads ior):
+    float roughness = 0.0f;       // perceptual, in [0, 1]: the GGX alpha is roughness^2, as in glTF
+    glm::vec3 f0{1.0f};           // conductors: reflectance at normal incidence (Schlick)
+    glm::vec3 eta{0.0f}, k{0.0f}; // conductors: complex index of refraction, used instead of f0 when eta.x > 0
 
     bool is_emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
-    bool is_specular() const { return type == MaterialType::mirror || type == MaterialType::glass; }
+    bool is_specular() const { return type >= MaterialType::mirror && type <= MaterialType::conductor; }
+    // A GGX lobe: neither diffuse nor specular (light samples and BSDF samples, never connected
+    // to the camera by light tracing nor a photon gather point; core/path_vertex.h).
+    bool is_microfacet() const { return type >= MaterialType::rough_conductor; }
 };
 
 // Triangles index into `vertices`. Winding defines the front face: the geometric normal is

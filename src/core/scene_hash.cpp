@@ -54,6 +54,8 @@ uint64_t scene_content_hash(const SceneDescription& d) {
     for (const Material& m : d.materials) {
         h.bytes(m.name.data(), m.name.size());  // names show in --debug-sample output
         h.value(m.type), h.value(m.albedo), h.value(m.sigma), h.value(m.reflectance), h.value(m.ior), h.value(m.emission);
+        // Only the types that read them: the other materials keep the hashes they had.
+        if (m.type >= MaterialType::conductor) h.value(m.roughness), h.value(m.f0), h.value(m.eta), h.value(m.k);
     }
     h.word(d.meshes.size());
     for (const TriangleMesh& mesh : d.meshes) {

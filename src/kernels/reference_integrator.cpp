@@ -1,5 +1,6 @@
 #include "kernels/reference_integrator.h"
 
+#include "core/glossy_light_sampler.h"
 #include "core/path_vertex.h"
 #include "kernels/accel/bvh_single_ray.h"
 #include "kernels/photons/photon_gather.h"
@@ -51,17 +52,21 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
             vertex.photons_added = throughput * g.radiance;
             radiance += vertex.photons_added;
         }
+        const auto add_light_sample = [&](const ShadowRay& shadow) {
+            ++counts.shadow_rays;
+            ++vertex.shadow_rays_traced;
+            if (blocked(shadow.ray, shadow.tmax)) return;
+            ++vertex.shadow_rays_unoccluded;
+            vertex.direct_added += shadow.contribution;
+            radiance += shadow.contribution;
+        };
         if (!scene.lights.empty() && gathers_direct_light(m)) {
             const DirectLightSampler<E> lights(scene, m, surface, light_sampling_point(surface, ray.direction),
                                                ray.direction, throughput, path, bounce, shadow_ray_count);
-            lights.sample_all([&](const ShadowRay& shadow) {
-                ++counts.shadow_rays;
-                ++vertex.shadow_rays_traced;
-                if (blocked(shadow.ray, shadow.tmax)) return;
-                ++vertex.shadow_rays_unoccluded;
-                vertex.direct_added += shadow.contribution;
-                radiance += shadow.contribution;
-            });
+            lights.sample_all(add_light_sample);
+        } else if (!scene.lights.empty() && m.is_microfacet()) {
+            GlossyLightSampler<E>(scene, m, surface, ray.direction, throughput, path, bounce, shadow_ray_count)
+                .sample_all(add_light_sample);
         }
         if (record) record->push_back(vertex);
 

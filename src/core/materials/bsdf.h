@@ -7,7 +7,10 @@
 #include <glm/vec3.hpp>
 
 #include "core/float_minmax.h"
+#include "core/materials/bsdf_sample.h"
+#include "core/materials/conductor_fresnel.h"
 #include "core/materials/fresnel.h"
+#include "core/materials/microfacet_bsdf.h"
 #include "core/sampling/sampling.h"
 #include "core/scene_description.h"
 
@@ -83,14 +86,6 @@ inline glm::vec3 eval_diffuse_bsdf(const Material& m, const glm::vec3& n, const 
     return DiffuseBsdfAtView(m, n, wo)(wi, glm::dot(n, wi));
 }
 
-struct BsdfSample {
-    glm::vec3 direction{0.0f};
-    glm::vec3 weight{0.0f};  // f * |cos| / pdf, or the specular throughput
-    bool specular = false;    // emission seen along it counts (no light sample covered it)
-    bool transmitted = false; // refracted through the surface rather than reflected
-    bool valid = false;
-};
-
 // The two halves of sample_bsdf, also called about a shading normal (shading_normal_bsdf.h).
 // Always inlined, each into both callers, so sample_bsdf compiles to what it was as one function.
 
@@ -124,29 +119,29 @@ struct BsdfSample {
         s.weight = m.reflectance;
         return s;
     }
+    if (m.type == MaterialType::conductor) {  // the mirror's direction, the metal's Fresnel weight
+        s.direction = glm::normalize(reflect(d, n));
+        s.weight = conductor_fresnel(m)(fmin_float(1.0f, -glm::dot(d, n)));
+        return s;
+    }
     // Radiance's eta^2 scaling on refraction is left out: with the camera and every light
     // outside the glass, each path that enters also leaves and the factors cancel.
     const float eta = front ? 1.0f / m.ior : m.ior;
-    const float cos_i = -glm::dot(d, n);
     const auto refracted = refract(d, n, eta);
     s.weight = glm::vec3(1.0f);
-    if (refracted) {
-        const float cos_outside = front ? cos_i : refracted->cos_transmitted;
-        const float reflectance = fresnel == FresnelModel::exact ? fresnel_dielectric(cos_i, refracted->cos_transmitted, eta)
-                                                                 : schlick_reflectance(cos_outside, m.ior);
-        // Choosing reflection with probability R makes the weight R / R = 1 either way.
-        if (u_choice >= reflectance) {
-            s.direction = refracted->direction;
-            s.transmitted = true;
-            return s;
-        }
+    // Choosing reflection with probability R makes the weight R / R = 1 either way.
+    if (refracted && u_choice >= glass_reflectance(d, n, refracted, front, m.ior, eta, fresnel)) {
+        s.direction = refracted->direction;
+        s.transmitted = true;
+        return s;
     }
     s.direction = glm::normalize(reflect(d, n));  // Fresnel reflection or total internal reflection
     return s;
 }
 
 // Samples the next direction. n_geom is the geometric normal (outward for spheres, winding for
-// triangles); d the incoming ray direction. u_choice and the Fresnel model only matter for glass.
+// triangles); d the incoming ray direction. u_choice and the Fresnel model only matter for the
+// glasses; u0 and u1 for the diffuse and rough materials.
 // Inside/outside of glass is decided by the geometric normal: spheres' normals point outward.
 // Out of line, as g++ chose before there was a second sampler next to it: inlined into the path
 // continuation it costs the shade loop more than the call.
@@ -155,6 +150,7 @@ struct BsdfSample {
     const bool front = glm::dot(d, n_geom) < 0.0f;
     const glm::vec3 n = front ? n_geom : -n_geom;  // facing the incoming ray
     if (m.is_specular()) return sample_specular(m, n, front, d, u_choice, fresnel);
+    if (m.is_microfacet()) return sample_microfacet(m, n_geom, nullptr, d, u0, u1, u_choice, fresnel);
     return sample_diffuse(m, n, d, u0, u1);
 }
 

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/accuracy.h"
 #include "core/float_minmax.h"
 
 namespace wt {
@@ -52,5 +53,18 @@ inline std::optional<Refraction> refract(const glm::vec3& d, const glm::vec3& n,
 }
 
 inline glm::vec3 reflect(const glm::vec3& d, const glm::vec3& n) { return d - 2.0f * glm::dot(d, n) * n; }
+
+// Smooth glass's reflectance at an interface of unit normal n (facing against d) for light
+// arriving along d, given what refract(d, n, eta) made of it: 1 on total internal reflection,
+// else by the Fresnel model. `front`: d arrives from the outside of the glass (index 1).
+// Shared by the smooth glass (n the surface's normal) and the rough one (n a microfacet's).
+inline float glass_reflectance(const glm::vec3& d, const glm::vec3& n, const std::optional<Refraction>& refracted, bool front,
+                               float ior, float eta, FresnelModel fresnel) {
+    if (!refracted) return 1.0f;
+    const float cos_i = -glm::dot(d, n);
+    const float cos_outside = front ? cos_i : refracted->cos_transmitted;
+    return fresnel == FresnelModel::exact ? fresnel_dielectric(cos_i, refracted->cos_transmitted, eta)
+                                          : schlick_reflectance(cos_outside, ior);
+}
 
 }  // namespace wt

@@ -25,6 +25,7 @@
 //   through the tangent plane like a diffuse direction; a ray arriving behind ns (possible at
 //   silhouettes) scatters about ng, as a flat surface would. Weights are unchanged, so
 //   specular scattering neither gains nor loses energy.
+// - Rough conductor and glass: about ns where the sides agree (microfacet_bsdf.h).
 //
 // Only vertices whose shading normal differs from the geometric one (SurfacePoint::smooth) come
 // here; the others run the flat code, bit for bit as before.
@@ -88,6 +89,7 @@ inline glm::vec3 mirrored_to_side(const glm::vec3& w, const glm::vec3& side, boo
 [[gnu::noinline]] inline BsdfSample sample_bsdf_about_shading_normal(const Material& m, const glm::vec3& n_geom,
                                                                      const glm::vec3& n_shading, const glm::vec3& d,
                                                                      float u0, float u1, float u_choice, FresnelModel fresnel) {
+    if (m.is_microfacet()) return sample_microfacet(m, n_geom, &n_shading, d, u0, u1, u_choice, fresnel);
     const bool front = glm::dot(d, n_geom) < 0.0f;
     const glm::vec3 ng = front ? n_geom : -n_geom;  // facing the incoming ray
     const glm::vec3 ns = shading_normal_facing(n_shading, ng);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/materials/bsdf.h"
+#include "core/materials/microfacet_material.h"
 #include "core/scene_file/scene_schema.h"
 
 // The materials section, and the lookup shapes use to name theirs.
@@ -10,15 +11,54 @@
 namespace wt {
 namespace {
 
-constexpr const char* kMaterialTypes = "lambertian, oren_nayar, mirror, glass";
+constexpr const char* kMaterialTypes = "lambertian, oren_nayar, mirror, glass, conductor, rough_glass";
 
+// The type as the file names it; a conductor or rough_glass is resolved by its roughness later
+// (microfacet_material.h), so these two come back as rough_conductor and rough_glass here.
 MaterialType read_material_type(const Reader& in, const Json& j, const std::string& path) {
     const std::string type = in.text(j, path);
     if (type == "lambertian") return MaterialType::lambertian;
     if (type == "oren_nayar") return MaterialType::oren_nayar;
     if (type == "mirror") return MaterialType::mirror;
     if (type == "glass") return MaterialType::glass;
+    if (type == "conductor") return MaterialType::rough_conductor;
+    if (type == "rough_glass") return MaterialType::rough_glass;
     in.fail(path, std::string("unknown material type (allowed: ") + kMaterialTypes + "), got " + describe(j));
+}
+
+float read_ior(const Reader& in, const Json& j, const std::string& path) {
+    const Json& ior = in.required(j, "ior", path);
+    const float value = in.number(ior, member_path(path, "ior"));
+    if (!(value > 0.0f)) in.fail(member_path(path, "ior"), "must be positive, got " + describe(ior));
+    return value;
+}
+
+// Perceptual roughness, 0 (smooth) by default.
+float read_roughness(const Reader& in, const Json& j, const std::string& path) {
+    const Json* r = in.optional(j, "roughness");
+    if (!r) return 0.0f;
+    const float value = in.number(*r, member_path(path, "roughness"));
+    if (!(value >= 0.0f && value <= 1.0f)) in.fail(member_path(path, "roughness"), "must be in [0, 1], got " + describe(*r));
+    return value;
+}
+
+// A conductor's Fresnel term: f0 (Schlick; white if nothing is given) or a complex index
+// eta + i k, both or neither.
+void read_conductor_fresnel(const Reader& in, const Json& j, const std::string& path, Material& m) {
+    const Json* eta = in.optional(j, "eta");
+    const Json* k = in.optional(j, "k");
+    if (const Json* f0 = in.optional(j, "f0")) {
+        if (eta || k)
+            in.fail(member_path(path, eta ? "eta" : "k"), "give either f0 or the complex index eta and k, not both");
+        m.f0 = in.color(*f0, member_path(path, "f0"), true);
+        return;
+    }
+    if (!eta && !k) return;
+    if (!eta || !k) in.fail(member_path(path, eta ? "k" : "eta"), "required key is missing (eta and k come together)");
+    m.eta = in.color(*eta, member_path(path, "eta"), false);
+    m.k = in.color(*k, member_path(path, "k"), false);
+    for (int c = 0; c < 3; ++c)
+        if (!(m.eta[c] > 0.0f)) in.fail(element_path(member_path(path, "eta"), std::size_t(c)), "must be positive, got " + describe((*eta)[std::size_t(c)]));
 }
 
 Material read_material(const Reader& in, const std::string& name, const Json& j, const std::string& path) {
@@ -31,7 +71,7 @@ Material read_material(const Reader& in, const std::string& name, const Json& j,
     const std::string type_name = j.at("type").get<std::string>();
 
     // The renderer only samples emission on diffuse surfaces; a glowing mirror would be ignored.
-    if (m.is_specular() && j.contains("emission"))
+    if ((m.is_specular() || m.is_microfacet()) && j.contains("emission"))
         in.fail(member_path(path, "emission"), "emission is not supported on " + type_name +
                                                    " materials (only lambertian and oren_nayar can emit)");
 
@@ -41,6 +81,9 @@ Material read_material(const Reader& in, const std::string& name, const Json& j,
     case MaterialType::oren_nayar: in.check_keys(j, path, {"type", "albedo", "sigma", "emission"}, context); break;
     case MaterialType::mirror: in.check_keys(j, path, {"type", "reflectance"}, context); break;
     case MaterialType::glass: in.check_keys(j, path, {"type", "ior"}, context); break;
+    case MaterialType::conductor:
+    case MaterialType::rough_conductor: in.check_keys(j, path, {"type", "f0", "eta", "k", "roughness"}, context); break;
+    case MaterialType::rough_glass: in.check_keys(j, path, {"type", "ior", "roughness"}, context); break;
     }
 
     if (m.type == MaterialType::lambertian || m.type == MaterialType::oren_nayar) {
@@ -61,10 +104,16 @@ Material read_material(const Reader& in, const std::string& name, const Json& j,
         if (const Json* r = in.optional(j, "reflectance"))
             m.reflectance = in.color(*r, member_path(path, "reflectance"), true);
     }
-    if (m.type == MaterialType::glass) {
-        const Json& ior = in.required(j, "ior", path);
-        m.ior = in.number(ior, member_path(path, "ior"));
-        if (!(m.ior > 0.0f)) in.fail(member_path(path, "ior"), "must be positive, got " + describe(ior));
+    if (m.type == MaterialType::glass) m.ior = read_ior(in, j, path);
+    if (m.type == MaterialType::rough_conductor) {
+        read_conductor_fresnel(in, j, path, m);
+        m.roughness = read_roughness(in, j, path);
+        m.type = conductor_type(m.roughness);
+    }
+    if (m.type == MaterialType::rough_glass) {
+        m.ior = read_ior(in, j, path);
+        m.roughness = read_roughness(in, j, path);
+        m.type = dielectric_type(m.roughness, m.ior);
     }
     return m;
 }

@@ -42,8 +42,9 @@ struct RayQueue {
     // Bit flags: kCountEmission (PathContinuation::count_emission; camera rays too) and
     // kSpecularLightElsewhere (PathContinuation::specular_light_elsewhere).
     AlignedVector<uint8_t> count_emission;
-    static constexpr uint8_t kCountEmission = 1, kSpecularLightElsewhere = 2;
-    AlignedVector<float> bsdf_pdf;         // mis only: PathContinuation::bsdf_pdf
+    // kRoughPdf: bsdf_pdf holds a rough bounce's pdf (set without mis; with mis it always does).
+    static constexpr uint8_t kCountEmission = 1, kSpecularLightElsewhere = 2, kRoughPdf = 4;
+    AlignedVector<float> bsdf_pdf;         // mis, or kRoughPdf: PathContinuation::bsdf_pdf
     std::size_t count = 0;
 
     void reserve(std::size_t n) {
@@ -61,9 +62,16 @@ struct RayQueue {
     // A continuation; the pdf is written only where the estimator reads it (mis).
     template <bool kWithPdf>
     void push(const PathContinuation& next, uint32_t slot) {
-        if constexpr (kWithPdf) bsdf_pdf[count] = next.bsdf_pdf;
+        uint8_t rough_pdf = 0;
+        if constexpr (kWithPdf) {
+            bsdf_pdf[count] = next.bsdf_pdf;
+        } else if (next.bsdf_pdf > 0.0f) {
+            bsdf_pdf[count] = next.bsdf_pdf;
+            rough_pdf = kRoughPdf;
+        }
         push(next.ray, next.throughput, slot,
-             uint8_t((next.count_emission ? kCountEmission : 0) | (next.specular_light_elsewhere ? kSpecularLightElsewhere : 0)));
+             uint8_t((next.count_emission ? kCountEmission : 0) | (next.specular_light_elsewhere ? kSpecularLightElsewhere : 0) |
+                     rough_pdf));
     }
     Ray ray(std::size_t i) const { return {{ox[i], oy[i], oz[i]}, {dx[i], dy[i], dz[i]}}; }
     glm::vec3 throughput(std::size_t i) const { return {throughput_r[i], throughput_g[i], throughput_b[i]}; }

@@ -6,6 +6,7 @@
 // AOVs runs the loop it ran before they existed, compiled as it was.
 
 #include "core/first_surface.h"
+#include "core/glossy_light_sampler.h"
 #include "core/path_vertex.h"
 #include "kernels/photons/photon_gather.h"
 #include "kernels/photons/photon_maps.h"
@@ -40,7 +41,8 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         const uint8_t flags = rays.count_emission[i];
         if (flags & RayQueue::kCountEmission)
             paths.add_radiance(slot, emission_added<E>(scene, m, surface, ray, hit.t, throughput,
-                                                       E::mis ? rays.bsdf_pdf[i] : 0.0f, bounce));
+                                                       E::mis || (flags & RayQueue::kRoughPdf) ? rays.bsdf_pdf[i] : 0.0f,
+                                                       bounce));
         const bool elsewhere = flags & RayQueue::kSpecularLightElsewhere;
         if (photons && gathers_photons(scene, m, bounce, elsewhere))
             paths.add_radiance(slot, throughput * gather_photons(photons->map(path.sample), m, surface, ray.direction,
@@ -50,6 +52,9 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
             const DirectLightSampler<E> lights(scene, m, surface, light_sampling_point(surface, ray.direction),
                                                ray.direction, throughput, path, bounce, shadow_ray_count);
             lights.sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
+        } else if (has_lights && m.is_microfacet()) {
+            GlossyLightSampler<E>(scene, m, surface, ray.direction, throughput, path, bounce, shadow_ray_count)
+                .sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
         }
         const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere);
         if (next) next_rays.push<E::mis>(*next, slot);
