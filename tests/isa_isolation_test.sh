@@ -10,17 +10,18 @@
 # A local function belongs to the TU named by the FILE symbol before it in the symbol table.
 set -euo pipefail
 status=0
+# The address -> TU table goes to awk as a file: as an argument (-v) a sanitizer build's table
+# passes the kernel's 128 kB limit on one argument ("Argument list too long").
+files=$(mktemp)
+trap 'rm -f "$files"' EXIT
 for binary in "$@"; do
   # address -> TU source file, for local functions; "" for global ones.
-  files=$(readelf -sW "$binary" | awk '
+  readelf -sW "$binary" | awk '
     $4 == "FILE" { file = $8; next }
     $4 == "FUNC" && $5 == "LOCAL" { print $2, file; next }
-    $4 == "FUNC" { print $2, "" }')
-  report=$(objdump -d --no-show-raw-insn -C "$binary" | awk -v files="$files" '
-    BEGIN {
-      n = split(files, lines, "\n")
-      for (i = 1; i <= n; ++i) { split(lines[i], f, " "); addr = f[1]; sub(/^0+/, "", addr); file_of[addr] = f[2] }
-    }
+    $4 == "FUNC" { print $2, "" }' >"$files"
+  report=$(objdump -d --no-show-raw-insn -C "$binary" | awk '
+    FNR == NR { addr = $1; sub(/^0+/, "", addr); file_of[addr] = $2; next }
     function finish() {
       if (name == "") return
       file = file_of[addr]
@@ -40,7 +41,7 @@ for binary in "$@"; do
     }
     /%zmm|%k[1-7]|%[xy]mm(1[6-9]|2[0-9]|3[01])|\{1to|vpternlog|vpermt2|vmovdq[au](8|16|32|64)|vpcmp[a-z]*\s.*%k/ { avx512 = 1 }
     /%ymm/ { ymm = 1 }
-    END { finish(); print "checked " checked " functions" > "/dev/stderr" }')
+    END { finish(); print "checked " checked " functions" > "/dev/stderr" }' "$files" -)
   if [ -n "$report" ]; then
     echo "FAIL: $binary:"; echo "$report" | head -20; status=1
   else
