@@ -56,7 +56,9 @@ const std::vector<Knob>& tradeoff_knobs() {
         {"light_sampling", {"nee", "mis"}, false, set_light_sampling, light_sampling},
         // 0 is off; the clamp trades bias (the mean drops where caustics are) for variance.
         {"clamp_indirect", {"0", "1", "4", "16"}, true, set_clamp, clamp},
-        {"caustics", {"path", "light_tracing"}, false, set_caustics, caustics},
+        // path and light_tracing are unbiased; photons are consistent (the disk kernel blurs the
+        // caustic by a radius that shrinks with the spp), so the floor is reported.
+        {"caustics", {"path", "light_tracing", "photons"}, true, set_caustics, caustics},
         // Only changes anything with light tracing: its work per sample against its noise.
         {"light_paths_per_pixel", {"0.25", "0.5", "1", "2", "4"}, false, set_light_paths, light_paths},
         // 0 is off. Stopping on an estimate of the error can bias (a heavy-tailed pixel whose
