@@ -41,9 +41,7 @@ public:
           count_(count),
           count_float_(float(count)),
           bsdf_competes_(int(bounce) + 1 < scene.settings.max_bounces),
-          clamp_limit_(E::clamps_indirect && is_indirect_light_sample(bounce)
-                           ? scene.settings.estimator.clamp_indirect / float(count)
-                           : INFINITY) {}
+          clamp_limit_(light_sample_clamp_limit<E>(scene, bounce, count)) {}
 
     // Every light sample of the vertex, in index order, as DirectLightSampler::sample_all.
     template <typename Emit>
@@ -67,11 +65,7 @@ public:
         if (cos_y <= 0.0f || cos_x == 0.0f || (cos_x < 0.0f && !bsdf_.transmits())) return false;
         const glm::vec3 f_cos = bsdf_.f_cos(wi);
         if (!(f_cos.x > 0.0f || f_cos.y > 0.0f || f_cos.z > 0.0f)) return false;
-        s.ray.origin = cos_x > 0.0f ? origin_front_ : origin_behind_;
-        const glm::vec3 target = offset_ray_origin(light.position, light.error, light.normal);
-        const glm::vec3 span = target - s.ray.origin;
-        s.tmax = glm::length(span);
-        s.ray.direction = span / s.tmax;
+        aim_shadow_ray(s, cos_x > 0.0f ? origin_front_ : origin_behind_, light);
         s.contribution = throughput_ * f_cos * light.radiance * (cos_y / (dist2 * light.pdf_area * count_float_));
         if (bsdf_competes_) {
             const float light_pdf = light.pdf_area * dist2 / cos_y;  // per unit solid angle

@@ -53,6 +53,25 @@ struct ShadowRay {
     glm::vec3 contribution;  // added to the path's radiance if nothing blocks the ray
 };
 
+// Aims `s` from `origin` (already moved off the shading surface) at the light point, itself
+// moved off its surface, so neither the shading point's nor the light's own triangle can block
+// the ray.
+inline void aim_shadow_ray(ShadowRay& s, const glm::vec3& origin, const LightSample& light) {
+    s.ray.origin = origin;
+    const glm::vec3 target = offset_ray_origin(light.position, light.error, light.normal);
+    const glm::vec3 span = target - origin;
+    s.tmax = glm::length(span);
+    s.ray.direction = span / s.tmax;
+}
+
+// The per-channel limit of each of a vertex's `count` light samples: the indirect clamp shared
+// among them, or none (direct light and estimators without the clamp).
+template <typename E>
+inline float light_sample_clamp_limit(const Scene& scene, uint32_t bounce, uint32_t count) {
+    return E::clamps_indirect && is_indirect_light_sample(bounce) ? scene.settings.estimator.clamp_indirect / float(count)
+                                                                  : INFINITY;
+}
+
 // What every light sample at one diffuse vertex shares, computed once per vertex.
 struct LightSamplingPoint {
     glm::vec3 normal;          // geometric, facing the incoming ray
@@ -128,9 +147,7 @@ public:
           count_(count),
           count_float_(float(count)),
           bsdf_competes_(E::mis && int(bounce) + 1 < scene.settings.max_bounces),
-          clamp_limit_(E::clamps_indirect && is_indirect_light_sample(bounce)
-                           ? scene.settings.estimator.clamp_indirect / float(count)
-                           : INFINITY) {}
+          clamp_limit_(light_sample_clamp_limit<E>(scene, bounce, count)) {}
 
     // Every light sample of the vertex, in index order; emit(const ShadowRay&) gets each one that
     // can contribute. One loop here rather than one call per sample in the caller: the shared
@@ -174,13 +191,7 @@ public:
         const glm::vec3 f = Folded ? folded_diffuse(bsdf_, n, at_.shading_normal, wi, cos_x) : bsdf_(wi, cos_x);
         const float cosine_x = Folded ? 1.0f : cos_x;
         const float geometry = cosine_x * cos_y / (dist2 * light.pdf_area * count_float_);
-        s.ray.origin = at_.ray_origin;
-        // Both ends are moved off their surfaces, so neither the shading point's nor the light's
-        // own triangle can block the ray.
-        const glm::vec3 target = offset_ray_origin(light.position, light.error, light.normal);
-        const glm::vec3 span = target - s.ray.origin;
-        s.tmax = glm::length(span);
-        s.ray.direction = span / s.tmax;
+        aim_shadow_ray(s, at_.ray_origin, light);
         s.contribution = throughput_ * f * light.radiance * geometry;
         if constexpr (E::mis) {
             if (bsdf_competes_) {
