@@ -75,6 +75,19 @@ inline glm::vec3 offset_ray_origin(const glm::vec3& p, const glm::vec3& error, c
     return out;
 }
 
+// A triangle hit point's error bound as the watertight test needs it: no component below a
+// quarter of the largest. A point on an axis-aligned plane through 0 (a wall on x = 0) has error
+// 0 along its normal, every coordinate there being exact, so the offset above leaves the ray on
+// its own plane. Moller-Trumbore then computes t = 0 exactly and rejects the plane, but the
+// watertight test computes t from the sheared vertices, whose rounding is at the scale of the
+// other coordinates: many such rays came out at a t of a few ulps and hit the wall they left, and
+// a room with walls on x = 0 and z = 0 rendered too dark. Only scenes with that test pay for it.
+inline glm::vec3 with_watertight_floor(const glm::vec3& error) {
+    const float larger_xy = error.x > error.y ? error.x : error.y;  // maxss, no branch
+    const float floor = 0.25f * (larger_xy > error.z ? larger_xy : error.z);
+    return {error.x > floor ? error.x : floor, error.y > floor ? error.y : floor, error.z > floor ? error.z : floor};
+}
+
 // For a point computed in a few operations from values no larger than itself (error ~ |p|).
 inline glm::vec3 offset_ray_origin(const glm::vec3& p, const glm::vec3& n) {
     return offset_ray_origin(p, rounding_gamma(7) * magnitude(p), n);

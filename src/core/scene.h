@@ -76,6 +76,7 @@ struct SurfacePoint {
         // which is what the ulp-based ray offset assumes.
         s.position = t.vertex0(hit.prim) + hit.u * t.edge1(hit.prim) + hit.v * t.edge2(hit.prim);
         s.error = triangle_point_error(t.vertex0(hit.prim), t.edge1(hit.prim), t.edge2(hit.prim), hit.u, hit.v);
+        if (scene.settings.accuracy.triangles == TriangleTest::watertight) s.error = with_watertight_floor(s.error);
         s.normal = t.normal(hit.prim);
         s.shading_normal = s.normal;
         s.smooth = false;
