@@ -19,6 +19,11 @@ TSAN_BUILD_DIR ?= build-tsan
 # The tests that run the thread pool: renders on several threads, the BVH build, the pool.
 TSAN_TESTS ?= ^(Determinism|AdaptiveDeterminism|AccelRender|EdgeSettings|WavefrontVsReference|ThreadPool|MemoryEstimate|Bvh\.BuildInvariantsAndDeterminism)\.
 
+# ccache, where it is installed, for the Release builds: `make test-mpi` then recompiles only
+# what MPI changes (the tools), not the core and the kernels `make test` compiled (.ci/run).
+CCACHE ?= $(shell command -v ccache 2>/dev/null)
+RELEASE_LAUNCHER = $(if $(CCACHE),-DCMAKE_C_COMPILER_LAUNCHER=$(CCACHE) -DCMAKE_CXX_COMPILER_LAUNCHER=$(CCACHE))
+
 .PHONY: render render-mesh reference tradeoff spp-series test test-long test-mpi test-asan test-tsan fuzz bench bench-deps perf-gate perf-gate-update build deps configure clean
 
 render: configure
@@ -68,7 +73,7 @@ test-long: build
 # killed rank): OpenMPI installed, its own build directory with -DWAVETRACE_MPI=ON.
 test-mpi: deps
 	tools/install-deps.sh libopenmpi-dev openmpi-bin
-	cmake -S . -B $(MPI_BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DWAVETRACE_MPI=ON
+	cmake -S . -B $(MPI_BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DWAVETRACE_MPI=ON $(RELEASE_LAUNCHER)
 	cmake --build $(MPI_BUILD_DIR) -j $(JOBS) --target wavetrace
 	cd $(MPI_BUILD_DIR) && ctest --output-on-failure -L mpi
 
@@ -114,7 +119,7 @@ deps:
 	tools/install-deps.sh
 
 configure: deps
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release $(RELEASE_LAUNCHER)
 
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)

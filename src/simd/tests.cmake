@@ -29,16 +29,12 @@ include(GoogleTest)
 include(${WT_SOURCE_DIR}/cmake/isa_object.cmake)
 # With a sanitizer (-O2 and its instrumentation), GCC does put EVEX instructions in the AVX-512
 # TU's static initialisers, so on a CPU without AVX-512 the binary dies of SIGILL before main
-# (seen on a Zen 1 machine). A sanitizer build made on such a CPU leaves that TU out (it is not
-# even compiled): it could not run its tests there anyway; the Release build keeps it, and
-# isa_isolation_test.sh checks it.
-set(simd_test_isas sse4 avx2 avx512)
-if(WAVETRACE_SANITIZE AND EXISTS /proc/cpuinfo)
-  file(READ /proc/cpuinfo wt_cpuinfo)
-  if(NOT wt_cpuinfo MATCHES "avx512f")
-    message(STATUS "simd_test: no AVX-512 on this CPU, so the sanitizer build leaves out its AVX-512 tests")
-    set(simd_test_isas sse4 avx2)
-  endif()
+# (seen on a Zen 1 machine). A sanitizer build made on such a CPU leaves that TU out
+# (WAVETRACE_WITH_AVX512, top-level CMakeLists.txt): it could not run its tests there anyway;
+# the Release build keeps it, and isa_isolation_test.sh checks it.
+set(simd_test_isas sse4 avx2)
+if(NOT DEFINED WAVETRACE_WITH_AVX512 OR WAVETRACE_WITH_AVX512)
+  list(APPEND simd_test_isas avx512)
 endif()
 set(simd_test_flags_sse4 -msse4.2)
 set(simd_test_flags_avx2 -mavx2 -mfma)

@@ -21,7 +21,9 @@ std::optional<Isa> parse_isa(const std::string& name) {
 }
 
 // __builtin_cpu_supports also checks that the OS saves the wide registers (XCR0), so a
-// kernel it allows cannot fault on a kernel that disabled AVX-512 state.
+// kernel it allows cannot fault on a kernel that disabled AVX-512 state. A sanitizer build made
+// on a CPU without AVX-512 has no AVX-512 kernels (WT_WITHOUT_AVX512_KERNELS, CMakeLists.txt):
+// for it no CPU supports them.
 bool cpu_supports(Isa isa) {
     __builtin_cpu_init();
     switch (isa) {
@@ -29,6 +31,9 @@ bool cpu_supports(Isa isa) {
         case Isa::sse4: return __builtin_cpu_supports("sse4.2");
         case Isa::avx2: return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
         case Isa::avx512:
+#ifdef WT_WITHOUT_AVX512_KERNELS
+            return false;
+#endif
             return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
                    __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl");
     }
@@ -53,7 +58,12 @@ const IntersectKernels& intersect_kernels(Isa isa, const AccuracySettings& accur
     switch (isa) {
         case Isa::sse4: return kIntersectSse4[variant];
         case Isa::avx2: return kIntersectAvx2[variant];
-        case Isa::avx512: return kIntersectAvx512[variant];
+        case Isa::avx512:
+#ifdef WT_WITHOUT_AVX512_KERNELS
+            break;  // not reached: cpu_supports() said no
+#else
+            return kIntersectAvx512[variant];
+#endif
         case Isa::scalar: break;
     }
     return kIntersectScalar[variant];
