@@ -67,11 +67,11 @@ EnvironmentSample EnvironmentLight::sample(float u0, float u1) const {
         return {{r * std::cos(phi), r * std::sin(phi), z}, constant_, 0.25f * kInvPi};
     }
     float density = 0.0f;
-    const glm::vec2 p = distribution_.sample(u0, u1, density);
-    const glm::vec3 d = direction(p);
-    const float sin_theta = std::sin(p.y * kPi);
-    const float pdf = sin_theta > 0.0f ? density / (2.0f * kPi * kPi * sin_theta) : 0.0f;
-    return {d, texel(p), pdf};
+    const glm::vec3 d = direction(distribution_.sample(u0, u1, density));
+    // The pdf and radiance of the direction as an escaping ray along it finds them (pdf(d),
+    // radiance(d)), not of the square's point it came from: near the poles the two differ by
+    // rounding, and the power heuristic's weights of a direction must sum to one exactly.
+    return {d, radiance(d), pdf(d)};
 }
 
 float EnvironmentLight::pdf(const glm::vec3& d) const {
