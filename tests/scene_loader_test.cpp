@@ -386,8 +386,9 @@ TEST(SceneErrors, DuplicateKey) {
 // Unknown and missing keys
 
 TEST(SceneErrors, UnknownTopLevelKey) {
-    expect_scene_error(mutated([](Json& j) { j["lights"] = Json::array(); }),
-                       "lights: unknown key (allowed: camera, render, materials, shapes)");
+    // "lights" is a section now; "light" is the typo it most likely comes as.
+    expect_scene_error(mutated([](Json& j) { j["light"] = Json::array(); }),
+                       "light: unknown key (allowed: camera, render, materials, shapes, lights)");
 }
 
 TEST(SceneErrors, UnknownCameraKey) {

@@ -23,6 +23,7 @@ LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>
     }
     total_area_ = float(running_area);
     pdf_area_ = 1.0f / total_area_;
+    pdf_area_alone_ = pdf_area_;
     for (std::size_t k = 0; k < emitters_.size(); ++k) emitters_[k].cdf = float(cumulative[k] / running_area);
     if (!emitters_.empty()) emitters_.back().cdf = 1.0f;  // so u_choice < 1 always finds an entry
     candidates_ = emitters_.empty() ? 0 : emitters_.size() - 1;

@@ -34,6 +34,12 @@ public:
     std::size_t size() const { return emitters_.size(); }
     float total_area() const { return total_area_; }
     float pdf_area() const { return pdf_area_; }  // of every light point sample() returns
+    // 1 / total_area: the pdf of a light point when the area lights are the only lights (light
+    // paths start at them alone), whatever the selection below.
+    float pdf_area_alone() const { return pdf_area_alone_; }
+    // With other lights (core/lights/scene_lights.h) the area lights are picked with probability
+    // p, and the pdfs this table returns include it: pdf_area() becomes p / total_area.
+    void set_selection_probability(float p) { pdf_area_ = p / total_area_; }
 
     // u_choice picks the triangle, (u0, u1) the point on it. (The triangles argument is the
     // scene's; the table keeps its own copy of what sampling reads, in one cache line per light.)
@@ -70,6 +76,7 @@ private:
     std::size_t candidates_ = 0;  // emitters_.size() - 1: the last is taken when no other is
     float total_area_ = 0.0f;
     float pdf_area_ = 0.0f;  // 1 / total_area_, divided once here rather than per sample
+    float pdf_area_alone_ = 0.0f;
 };
 
 inline LightSample LightTable::sample(const TriangleSoA&, float u_choice, float u0, float u1) const {

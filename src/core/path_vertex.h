@@ -255,6 +255,10 @@ struct PathContinuation {
     // specular surfaces.
     bool specular_light_elsewhere;
     float bsdf_pdf;  // mis, or a rough bounce: the direction's pdf if light samples competed for it, else 0 (emission_added)
+    // A scene with a "lights" list only (core/lights/listed_light_sampler.h): the next ray, if it
+    // leaves the scene, counts what it sees there. As count_emission, but whatever
+    // specular_light_elsewhere says: light paths start at no environment.
+    bool count_environment = false;
 };
 
 // Whether the photons' estimate is added at this vertex: the first diffuse vertex, past the
@@ -304,7 +308,8 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
                                                                  (bounce == 0 ? scene.light_traces_caustics : scene.merges_photons));
     // A rough lobe is always weighted against its light samples, nee or mis: light samples alone
     // cannot find a sharp lobe's light, nor BSDF samples alone a small light (GlossyLightSampler).
-    next.count_emission = (E::mis || s.specular || s.glossy) && !(next.specular_light_elsewhere && s.specular);
+    next.count_environment = E::mis || s.specular || s.glossy;
+    next.count_emission = next.count_environment && !(next.specular_light_elsewhere && s.specular);
     next.bsdf_pdf = 0.0f;
     if constexpr (E::mis) {
         if (!s.specular) next.bsdf_pdf = s.glossy ? s.pdf : diffuse_direction_pdf(surface, d, s.direction);

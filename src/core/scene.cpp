@@ -1,6 +1,9 @@
 #include "core/scene.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -20,6 +23,28 @@ bool light_traces_caustics(const SceneDescription& d) {
     });
     return has_triangle_light && has(&Material::is_specular);
 }
+
+namespace {
+
+// The radius of a sphere about the bounding box's centre that holds every primitive: what the
+// lights at infinity's power is measured on (core/lights/scene_lights.h). 1 for an empty scene.
+float bounding_radius(const Scene& scene) {
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
+        const glm::vec3 v0 = scene.triangles.vertex0(i);
+        for (const glm::vec3& v : {v0, v0 + scene.triangles.edge1(i), v0 + scene.triangles.edge2(i),
+                                   v0 + scene.triangles.edge1(i) + scene.triangles.edge2(i)})
+            lo = glm::min(lo, v), hi = glm::max(hi, v);
+    }
+    for (uint32_t i = 0; i < scene.spheres.size(); ++i) {
+        const glm::vec3 c = scene.spheres.center(i);
+        lo = glm::min(lo, c - scene.spheres.radius[i]), hi = glm::max(hi, c + scene.spheres.radius[i]);
+    }
+    const float r = 0.5f * glm::length(hi - lo);
+    return r > 0.0f && std::isfinite(r) ? r : 1.0f;
+}
+
+}  // namespace
 
 Scene build_scene(const SceneDescription& description) {
     Scene scene;
@@ -57,6 +82,11 @@ Scene build_scene(const SceneDescription& description) {
         scene.spheres.push_back(sphere.center, sphere.radius, sphere.material);
     }
     scene.lights = LightTable(scene.triangles, scene.materials);
+    if (!description.lights.empty()) {
+        scene.listed_lights = SceneLights(description.lights, scene.lights.empty() ? 0.0 : area_light_power(scene.triangles, scene.materials),
+                                          bounding_radius(scene));
+        if (!scene.lights.empty()) scene.lights.set_selection_probability(scene.listed_lights.area_probability());
+    }
     // The loader refuses degenerate lights, so a description with an emitter has a light table.
     scene.light_traces_caustics = light_traces_caustics(description) && !scene.lights.empty();
     // Photons land only on diffuse surfaces that reflect something: without one there is nothing to gather.

@@ -11,6 +11,7 @@
 #include "core/camera.h"
 #include "core/geometry_soa.h"
 #include "core/light_table.h"
+#include "core/lights/scene_lights.h"
 #include "core/ray.h"
 #include "core/ray_offset.h"
 #include "core/scene_description.h"
@@ -25,7 +26,10 @@ struct Scene {
     TriangleSoA triangles;
     ShadingNormalTable shading_normals;  // empty unless some mesh has vertex normals
     SphereSoA spheres;
-    LightTable lights;
+    LightTable lights;  // the emissive triangles
+    // The scene file's "lights" list, with the area lights as one entry of its selection; empty
+    // without the list, and then no code reads it (the integrators pick their loop once).
+    SceneLights listed_lights;
     // Light paths estimate the caustics seen directly (path_vertex.h, light_paths_count_emission):
     // asked for by the settings, and the scene has lights and a mirror or glass surface.
     bool light_traces_caustics = false;

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <memory>
+
 #include <glm/vec3.hpp>
 
 #include "core/accuracy.h"
@@ -72,6 +74,32 @@ struct Sphere {
 
 // Pinhole camera. fov_degrees is the vertical field of view; the horizontal one follows
 // from the image's aspect ratio. Screen right is cross(look direction, up).
+// A light of the scene file's "lights" list (README, "Lights"), beside the emissive materials.
+// Units: radiance W/(m^2 sr), intensity W/sr, irradiance W/m^2.
+enum class LightType : uint8_t { environment, point, spot, directional };
+
+// An equirectangular map's texels, linear RGB, rows from +z (top) to -z (bottom).
+struct EnvironmentMap {
+    int width = 0, height = 0;
+    std::vector<float> rgb;  // width * height * 3, interleaved
+};
+
+struct LightDescription {
+    LightType type = LightType::point;
+    glm::vec3 radiance{0.0f};   // environment without a map: constant radiance
+    std::string file;           // environment with a map: the file as the scene names it
+    std::shared_ptr<const EnvironmentMap> map;  // its texels, read by the loader
+    float strength = 1.0f;      // scales the map
+    float rotate_degrees = 0.0f;  // turns the map about +z
+    glm::vec3 position{0.0f};   // point, spot
+    glm::vec3 intensity{0.0f};  // point, spot (on the axis)
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot: its axis; directional: where the light travels (unit)
+    float cone_degrees = 90.0f;  // spot: full opening angle, in (0, 180]
+    float blend = 0.0f;          // spot: fraction of the cone over which it fades out, [0, 1]
+    glm::vec3 irradiance{0.0f};  // directional: on a surface facing it
+    float angle_degrees = 0.0f;  // directional: angular diameter of the source, [0, 180); 0 = a delta
+};
+
 struct CameraDescription {
     glm::vec3 eye{0.0f};
     glm::vec3 look_at{1.0f, 0.0f, 0.0f};
@@ -101,6 +129,7 @@ struct SceneDescription {
     std::vector<Material> materials;
     std::vector<TriangleMesh> meshes;
     std::vector<Sphere> spheres;
+    std::vector<LightDescription> lights;  // beside the emissive materials; usually empty
     // One line each, for the user, about what the loader skipped or could not map (degenerate
     // triangles dropped from a mesh file, its textures, ...); never an error. The CLI prints them.
     std::vector<std::string> notes;

@@ -63,6 +63,16 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         h.value(mesh.material), h.value(mesh.parallelogram);
     }
     h.array(d.spheres);
+    // Only when there are some: a scene without the list keeps the hash it had.
+    if (!d.lights.empty()) {
+        h.word(d.lights.size());
+        for (const LightDescription& l : d.lights) {
+            h.value(l.type), h.value(l.radiance), h.value(l.strength), h.value(l.rotate_degrees), h.value(l.position);
+            h.value(l.intensity), h.value(l.direction), h.value(l.cone_degrees), h.value(l.blend), h.value(l.irradiance);
+            h.value(l.angle_degrees);
+            if (l.map) h.word(uint64_t(l.map->width)), h.word(uint64_t(l.map->height)), h.array(l.map->rgb);
+        }
+    }
     return h.result();
 }
 

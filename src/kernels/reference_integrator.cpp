@@ -1,6 +1,7 @@
 #include "kernels/reference_integrator.h"
 
 #include "core/glossy_light_sampler.h"
+#include "core/lights/listed_light_sampler.h"
 #include "core/path_vertex.h"
 #include "kernels/accel/bvh_single_ray.h"
 #include "kernels/photons/photon_gather.h"
@@ -11,7 +12,9 @@ namespace wt {
 
 namespace {
 
-template <typename E>
+// kListedLights: the scene has a "lights" list (Scene::listed_lights), whose samplers and escaped
+// rays the loop runs instead of the area lights' alone; chosen once per path.
+template <typename E, bool kListedLights>
 glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCounts& counts,
                      std::vector<PathVertexRecord>* record, const BvhView* bvh, FirstSurface* first_surface,
                      const PhotonMaps* photons) {
@@ -29,10 +32,16 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
     bool count_emission = true;  // camera rays, specular bounces (no light sample covered them), any with mis
     float bsdf_pdf = 0.0f;       // mis: see emission_added
     bool specular_light_elsewhere = false;  // light tracing only: PathContinuation::specular_light_elsewhere
+    [[maybe_unused]] bool count_environment = true;  // kListedLights: PathContinuation::count_environment
 
     for (uint32_t bounce = 0;; ++bounce) {
         const Hit hit = closest(ray);
-        if (!hit.found()) break;  // no environment light
+        if (!hit.found()) {
+            if constexpr (kListedLights)
+                if (count_environment && scene.listed_lights.seen_by_escaping_rays())
+                    radiance += escaped_radiance<E>(scene, ray.direction, throughput, bsdf_pdf, bounce);
+            break;
+        }
         const SurfacePoint surface = surface_at(scene, ray, hit);
         const Material& m = scene.materials[surface.material];
         if (first_surface && !first_surface->found)
@@ -60,7 +69,9 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
             vertex.direct_added += shadow.contribution;
             radiance += shadow.contribution;
         };
-        if (!scene.lights.empty() && gathers_direct_light(m)) {
+        if constexpr (kListedLights) {
+            sample_listed_lights<E>(scene, m, surface, ray.direction, throughput, path, bounce, add_light_sample);
+        } else if (!scene.lights.empty() && gathers_direct_light(m)) {
             const DirectLightSampler<E> lights(scene, m, surface, light_sampling_point(surface, ray.direction),
                                                ray.direction, throughput, path, bounce, shadow_ray_count);
             lights.sample_all(add_light_sample);
@@ -79,6 +90,7 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
         count_emission = next->count_emission;
         specular_light_elsewhere = next->specular_light_elsewhere;
         bsdf_pdf = next->bsdf_pdf;
+        count_environment = next->count_environment;
     }
     return radiance;
 }
@@ -89,7 +101,10 @@ void render_pixel(const Scene& scene, uint32_t pixel, uint32_t sample_begin, uin
     const bool with_aovs = aovs.needs_path_data();
     for (uint32_t s = sample_begin; s < sample_end; ++s) {
         FirstSurface first;
-        const glm::vec3 radiance = trace_path<E>(scene, pixel, s, counts, nullptr, bvh, with_aovs ? &first : nullptr, photons);
+        FirstSurface* aov = with_aovs ? &first : nullptr;
+        const glm::vec3 radiance = scene.listed_lights.empty()
+                                       ? trace_path<E, false>(scene, pixel, s, counts, nullptr, bvh, aov, photons)
+                                       : trace_path<E, true>(scene, pixel, s, counts, nullptr, bvh, aov, photons);
         ++counts.samples;
         float extra[Film::max_extra_channels];
         if (with_aovs) aov_sample_values(aovs, first, extra);
@@ -112,7 +127,9 @@ glm::vec3 trace_reference_path(const Scene& scene, uint32_t pixel, uint32_t samp
                                std::vector<PathVertexRecord>* record, const BvhView* bvh, FirstSurface* first_surface,
                                const PhotonMaps* photons) {
     return with_estimator(scene.settings.estimator, [&](auto estimator) {
-        return trace_path<decltype(estimator)>(scene, pixel, sample, counts, record, bvh, first_surface, photons);
+        using E = decltype(estimator);
+        return scene.listed_lights.empty() ? trace_path<E, false>(scene, pixel, sample, counts, record, bvh, first_surface, photons)
+                                           : trace_path<E, true>(scene, pixel, sample, counts, record, bvh, first_surface, photons);
     });
 }
 

@@ -10,7 +10,7 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
     const Json root = parse_json(text, source_name);
     const Reader in(source_name);
     in.expect_object(root, "");
-    in.check_keys(root, "", {"camera", "render", "materials", "shapes"});
+    in.check_keys(root, "", {"camera", "render", "materials", "shapes", "lights"});
 
     SceneDescription scene;
     // Fixed order, whatever the file's: shapes need the materials.
@@ -18,6 +18,7 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
     if (const Json* render = in.optional(root, "render")) scene.settings = read_render(in, *render, "render");
     scene.materials = read_materials(in, in.required(root, "materials", ""), "materials");
     read_shapes(in, in.required(root, "shapes", ""), "shapes", scene);
+    if (const Json* lights = in.optional(root, "lights")) scene.lights = read_lights(in, *lights, "lights");
     return scene;
 }
 

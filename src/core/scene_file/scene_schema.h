@@ -27,6 +27,8 @@ glm::dmat4 read_transform(const Reader& in, const Json& j, const std::string& pa
 // "type": "mesh_file": the file is found relative to the scene file's directory.
 void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene,
                           MaterialNames& names);
+// The "lights" list (environment maps are read here, relative to the scene file's directory).
+std::vector<LightDescription> read_lights(const Reader& in, const Json& j, const std::string& path);
 // Needs scene.materials; appends to scene.meshes and scene.spheres (and to scene.materials and
 // scene.notes, for mesh files).
 void read_shapes(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene);

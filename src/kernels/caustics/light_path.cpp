@@ -74,7 +74,10 @@ std::optional<LightRay> LightPathTracer::start(uint64_t key) const {
     if (!(glm::dot(r.ray.direction, light.normal) > 0.0f)) return std::nullopt;  // lost to rounding at the horizon
     r.ray.origin = offset_ray_origin(light.position, light.error, light.normal);
     // Le cos / (pdf_area * cos / pi): the emitted power the path carries, per unit of its pdf.
-    r.power = light.radiance * (kPi / light.pdf_area);
+    // The area lights' pdf alone: light paths start at no other light (a scene's "lights" list
+    // is the camera paths' to sample, core/lights/listed_light_sampler.h), so they pick among
+    // the area lights with probability one.
+    r.power = light.radiance * (kPi / scene_.lights.pdf_area_alone());
     r.weight = glm::vec3(1.0f);
     return r;
 }

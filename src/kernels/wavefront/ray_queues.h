@@ -43,7 +43,9 @@ struct RayQueue {
     // kSpecularLightElsewhere (PathContinuation::specular_light_elsewhere).
     AlignedVector<uint8_t> count_emission;
     // kRoughPdf: bsdf_pdf holds a rough bounce's pdf (set without mis; with mis it always does).
-    static constexpr uint8_t kCountEmission = 1, kSpecularLightElsewhere = 2, kRoughPdf = 4;
+    // kCountEnvironment: PathContinuation::count_environment, set only in a scene with a
+    // "lights" list (shade_queue.h), where camera rays count what they escape to anyway.
+    static constexpr uint8_t kCountEmission = 1, kSpecularLightElsewhere = 2, kRoughPdf = 4, kCountEnvironment = 8;
     AlignedVector<float> bsdf_pdf;         // mis, or kRoughPdf: PathContinuation::bsdf_pdf
     std::size_t count = 0;
 

@@ -7,6 +7,7 @@
 
 #include "core/first_surface.h"
 #include "core/glossy_light_sampler.h"
+#include "core/lights/listed_light_sampler.h"
 #include "core/path_vertex.h"
 #include "kernels/photons/photon_gather.h"
 #include "kernels/photons/photon_maps.h"
@@ -16,8 +17,11 @@ namespace wt {
 
 // The same vertex logic as trace_reference_path, in the same order (emission, then light
 // samples, then the continuation; the photons' estimate, where one is gathered, after the
-// emission), so both integrators add a path's terms identically.
-template <typename E, bool kRecordAovs>
+// emission), so both integrators add a path's terms identically. kListedLights: the scene
+// has a "lights" list (Scene::listed_lights): its light samplers, and what escaping rays see, in
+// place of the area lights' alone (stage_shade_listed_lights.cpp; the loop without it compiles
+// as before).
+template <typename E, bool kRecordAovs, bool kListedLights = false>
 void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
                  RayQueue& next_rays, ShadowQueue& shadows, const PhotonMaps* photons) {
     const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
@@ -26,7 +30,17 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
     shadows.count = 0;
     for (std::size_t i = 0; i < rays.count; ++i) {
         const Hit hit = hits.hit(i);
-        if (!hit.found()) continue;  // no environment light: the path ends with what it has
+        if constexpr (!kListedLights) {
+            if (!hit.found()) continue;  // no environment light: the path ends with what it has
+        } else if (!hit.found()) {
+            const uint8_t flags = rays.count_emission[i];
+            if ((bounce == 0 || (flags & RayQueue::kCountEnvironment)) && scene.listed_lights.seen_by_escaping_rays())
+                paths.add_radiance(rays.path[i], escaped_radiance<E>(scene, glm::vec3(rays.dx[i], rays.dy[i], rays.dz[i]),
+                                                                     rays.throughput(i),
+                                                                     E::mis || (flags & RayQueue::kRoughPdf) ? rays.bsdf_pdf[i] : 0.0f,
+                                                                     bounce));
+            continue;
+        }
         const Ray ray = rays.ray(i);
         const uint32_t slot = rays.path[i];
         const PathSeed path{paths.key[slot], paths.sample[slot]};
@@ -48,7 +62,10 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
             paths.add_radiance(slot, throughput * gather_photons(photons->map(path.sample), m, surface, ray.direction,
                                                                  photon_vertex_limit(scene, bounce))
                                                       .radiance);
-        if (has_lights && gathers_direct_light(m)) {
+        if constexpr (kListedLights) {
+            sample_listed_lights<E>(scene, m, surface, ray.direction, throughput, path, bounce,
+                                    [&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
+        } else if (has_lights && gathers_direct_light(m)) {
             const DirectLightSampler<E> lights(scene, m, surface, light_sampling_point(surface, ray.direction),
                                                ray.direction, throughput, path, bounce, shadow_ray_count);
             lights.sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
@@ -57,13 +74,21 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
                 .sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
         }
         const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere);
-        if (next) next_rays.push<E::mis>(*next, slot);
+        if (next) {
+            next_rays.push<E::mis>(*next, slot);
+            if constexpr (kListedLights)
+                if (next->count_environment) next_rays.count_emission[next_rays.count - 1] |= RayQueue::kCountEnvironment;
+        }
     }
 }
 
 
+// (Two macros, not one calling the other: E's commas would split it into more arguments.)
 #define WT_SHADE_QUEUE_SIGNATURE(E, record_aovs)                                                                          \
-    void shade_queue<E, record_aovs>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&, RayQueue&,     \
-                                     ShadowQueue&, const PhotonMaps*)
+    void shade_queue<E, record_aovs, false>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&,         \
+                                            RayQueue&, ShadowQueue&, const PhotonMaps*)
+#define WT_SHADE_QUEUE_SIGNATURE_LIGHTS(E, record_aovs)                                                                   \
+    void shade_queue<E, record_aovs, true>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&,          \
+                                           RayQueue&, ShadowQueue&, const PhotonMaps*)
 
 }  // namespace wt

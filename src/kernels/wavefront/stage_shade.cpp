@@ -7,12 +7,25 @@ namespace wt {
     extern template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), true);
 WT_FOR_EACH_OPTIONAL_ESTIMATOR(WT_DECLARE_SHADE_QUEUE)
 extern template WT_SHADE_QUEUE_SIGNATURE(DefaultEstimator, true);
+#define WT_DECLARE_SHADE_QUEUE_LIGHTS(sampler, lights, clamps)                                                   \
+    extern template WT_SHADE_QUEUE_SIGNATURE_LIGHTS(WT_ESTIMATOR(sampler, lights, clamps), false); \
+    extern template WT_SHADE_QUEUE_SIGNATURE_LIGHTS(WT_ESTIMATOR(sampler, lights, clamps), true);
+WT_FOR_EACH_OPTIONAL_ESTIMATOR(WT_DECLARE_SHADE_QUEUE_LIGHTS)
+extern template WT_SHADE_QUEUE_SIGNATURE_LIGHTS(DefaultEstimator, false);
+extern template WT_SHADE_QUEUE_SIGNATURE_LIGHTS(DefaultEstimator, true);
 
 void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
                  RayQueue& next_rays, ShadowQueue& shadows, const PhotonMaps* photons) {
     const bool record_aovs = !paths.first_surface.empty();
     with_estimator(scene.settings.estimator, [&](auto estimator) {
         using E = decltype(estimator);
+        if (!scene.listed_lights.empty()) {
+            if (record_aovs)
+                shade_queue<E, true, true>(scene, bounce, rays, hits, paths, next_rays, shadows, photons);
+            else
+                shade_queue<E, false, true>(scene, bounce, rays, hits, paths, next_rays, shadows, photons);
+            return;
+        }
         if (record_aovs)
             shade_queue<E, true>(scene, bounce, rays, hits, paths, next_rays, shadows, photons);
         else
