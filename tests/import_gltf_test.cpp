@@ -159,7 +159,9 @@ TEST_F(GltfImport, MaterialsFromFile) {
     EXPECT_EQ(scene.materials[3].name, "m.gltf/lamp");
     EXPECT_EQ(scene.materials[3].type, MaterialType::principled);
     EXPECT_EQ(scene.materials[3].emission, glm::vec3(1, 2, 3));
-    EXPECT_EQ(scene.materials[4].type, MaterialType::glass);
+    // Transmission with glTF's default roughnessFactor, 1: frosted glass.
+    EXPECT_EQ(scene.materials[4].type, MaterialType::rough_glass);
+    EXPECT_FLOAT_EQ(scene.materials[4].roughness, 1.0f);
     EXPECT_FLOAT_EQ(scene.materials[4].ior, 1.4f);
     // Metallic 1, roughness 0: the smooth conductor of F0 baseColorFactor.
     EXPECT_EQ(scene.materials[5].type, MaterialType::conductor);
