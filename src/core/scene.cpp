@@ -56,6 +56,8 @@ Scene build_scene(const SceneDescription& description) {
     for (const Sphere& sphere : description.spheres) {
         scene.spheres.push_back(sphere.center, sphere.radius, sphere.material);
     }
+    scene.has_rough_materials = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                            [](const Material& m) { return m.is_microfacet(); });
     scene.lights = LightTable(scene.triangles, scene.materials);
     // The loader refuses degenerate lights, so a description with an emitter has a light table.
     scene.light_traces_caustics = light_traces_caustics(description) && !scene.lights.empty();

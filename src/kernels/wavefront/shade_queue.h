@@ -3,7 +3,9 @@
 // first surface. Included by stage_shade.cpp (the default estimator without AOVs),
 // stage_shade_options.cpp (the other estimators without them), stage_shade_aovs.cpp (the
 // default with them) and stage_shade_options_aovs.cpp (the others with them): a render without
-// AOVs runs the loop it ran before they existed, compiled as it was.
+// AOVs runs the loop it ran before they existed, compiled as it was. Likewise kRough: the loop
+// for scenes with rough materials (Scene::has_rough_materials), every estimator, is compiled in
+// stage_shade_rough.cpp, and the other scenes run the loop without their light samples and pdfs.
 
 #include "core/first_surface.h"
 #include "core/glossy_light_sampler.h"
@@ -17,7 +19,7 @@ namespace wt {
 // The same vertex logic as trace_reference_path, in the same order (emission, then light
 // samples, then the continuation; the photons' estimate, where one is gathered, after the
 // emission), so both integrators add a path's terms identically.
-template <typename E, bool kRecordAovs>
+template <typename E, bool kRecordAovs, bool kRough>
 void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
                  RayQueue& next_rays, ShadowQueue& shadows, const PhotonMaps* photons) {
     const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
@@ -40,9 +42,11 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         }
         const uint8_t flags = rays.count_emission[i];
         if (flags & RayQueue::kCountEmission)
-            paths.add_radiance(slot, emission_added<E>(scene, m, surface, ray, hit.t, throughput,
-                                                       E::mis || (flags & RayQueue::kRoughPdf) ? rays.bsdf_pdf[i] : 0.0f,
-                                                       bounce));
+            paths.add_radiance(slot, emission_added<E, kRough>(scene, m, surface, ray, hit.t, throughput,
+                                                               E::mis || (kRough && (flags & RayQueue::kRoughPdf))
+                                                                   ? rays.bsdf_pdf[i]
+                                                                   : 0.0f,
+                                                               bounce));
         const bool elsewhere = flags & RayQueue::kSpecularLightElsewhere;
         if (photons && gathers_photons(scene, m, bounce, elsewhere))
             paths.add_radiance(slot, throughput * gather_photons(photons->map(path.sample), m, surface, ray.direction,
@@ -52,18 +56,18 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
             const DirectLightSampler<E> lights(scene, m, surface, light_sampling_point(surface, ray.direction),
                                                ray.direction, throughput, path, bounce, shadow_ray_count);
             lights.sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
-        } else if (has_lights && m.is_microfacet()) {
+        } else if (kRough && has_lights && m.is_microfacet()) {
             GlossyLightSampler<E>(scene, m, surface, ray.direction, throughput, path, bounce, shadow_ray_count)
                 .sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
         }
-        const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere);
+        const auto next = continue_path<E, kRough>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere);
         if (next) next_rays.push<E::mis>(*next, slot);
     }
 }
 
 
-#define WT_SHADE_QUEUE_SIGNATURE(E, record_aovs)                                                                          \
-    void shade_queue<E, record_aovs>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&, RayQueue&,     \
-                                     ShadowQueue&, const PhotonMaps*)
+#define WT_SHADE_QUEUE_SIGNATURE(E, record_aovs, rough)                                                            \
+    void shade_queue<E, record_aovs, rough>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&, \
+                                            RayQueue&, ShadowQueue&, const PhotonMaps*)
 
 }  // namespace wt

@@ -2,21 +2,31 @@
 
 namespace wt {
 
-#define WT_DECLARE_SHADE_QUEUE(sampler, lights, clamps)                                  \
-    extern template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), false); \
-    extern template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), true);
+#define WT_DECLARE_SHADE_QUEUE(sampler, lights, clamps)                                         \
+    extern template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), false, false); \
+    extern template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), true, false);  \
+    extern template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), false, true);  \
+    extern template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), true, true);
 WT_FOR_EACH_OPTIONAL_ESTIMATOR(WT_DECLARE_SHADE_QUEUE)
-extern template WT_SHADE_QUEUE_SIGNATURE(DefaultEstimator, true);
+extern template WT_SHADE_QUEUE_SIGNATURE(DefaultEstimator, true, false);
+extern template WT_SHADE_QUEUE_SIGNATURE(DefaultEstimator, false, true);
+extern template WT_SHADE_QUEUE_SIGNATURE(DefaultEstimator, true, true);
 
 void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
                  RayQueue& next_rays, ShadowQueue& shadows, const PhotonMaps* photons) {
     const bool record_aovs = !paths.first_surface.empty();
     with_estimator(scene.settings.estimator, [&](auto estimator) {
         using E = decltype(estimator);
-        if (record_aovs)
-            shade_queue<E, true>(scene, bounce, rays, hits, paths, next_rays, shadows, photons);
-        else
-            shade_queue<E, false>(scene, bounce, rays, hits, paths, next_rays, shadows, photons);
+        if (scene.has_rough_materials) {
+            if (record_aovs)
+                shade_queue<E, true, true>(scene, bounce, rays, hits, paths, next_rays, shadows, photons);
+            else
+                shade_queue<E, false, true>(scene, bounce, rays, hits, paths, next_rays, shadows, photons);
+        } else if (record_aovs) {
+            shade_queue<E, true, false>(scene, bounce, rays, hits, paths, next_rays, shadows, photons);
+        } else {
+            shade_queue<E, false, false>(scene, bounce, rays, hits, paths, next_rays, shadows, photons);
+        }
     });
 }
 
