@@ -22,6 +22,7 @@ namespace {
 
 using test::Albedo;
 using test::direction_at;
+using test::principled;
 using test::Sampled;
 using test::sampled_albedo;
 using test::sampling_p_value;
@@ -30,17 +31,6 @@ using test::view;
 
 const glm::vec3 kUp(0, 0, 1);
 
-// The principled material itself, whatever metallic (principled_material would turn metallic 1
-// into the conductor).
-Material principled(glm::vec3 base, float metallic, float roughness, float ior = 1.5f) {
-    Material m;
-    m.type = MaterialType::principled;
-    m.base_color = base;
-    m.metallic = metallic;
-    m.roughness = roughness;
-    m.ior = ior;
-    return m;
-}
 
 // The specification's BRDF (glTF 2.0, appendix B.3), term by term in double precision, sharing
 // no code with the renderer: mix(fresnel_mix(ior, Lambert, GGX), conductor_fresnel(base, GGX), metallic).
