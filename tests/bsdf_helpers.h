@@ -16,6 +16,21 @@ inline Material diffuse(MaterialType type, float albedo, float sigma = 0.0f) {
     return m;
 }
 
+// glTF's metallic-roughness material itself, whatever metallic (principled_material would load
+// metallic 1 without emission as the conductor).
+inline Material principled(const glm::vec3& base, float metallic, float roughness, float ior = 1.5f,
+                           const glm::vec3& emission = glm::vec3(0.0f)) {
+    Material m;
+    m.name = "principled";
+    m.type = MaterialType::principled;
+    m.base_color = base;
+    m.metallic = metallic;
+    m.roughness = roughness;
+    m.ior = ior;
+    m.emission = emission;
+    return m;
+}
+
 // Unit direction at polar angle theta from +z and azimuth phi.
 inline glm::vec3 direction_at(double theta, double phi) {
     return glm::vec3(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)), float(std::cos(theta)));

@@ -151,14 +151,21 @@ TEST_F(GltfImport, MaterialsFromFile) {
     const SceneDescription scene = load(R"({"type": "mesh_file", "file": "m.gltf", "material": "from_file"})");
     ASSERT_EQ(scene.materials.size(), 6u);
     EXPECT_EQ(scene.materials[2].name, "m.gltf/red");
-    EXPECT_EQ(scene.materials[2].type, MaterialType::lambertian);
-    expect_vec3_near(scene.materials[2].albedo, {0.8f, 0.1f, 0.1f});
+    // glTF's roughnessFactor defaults to 1: a rough red plastic.
+    EXPECT_EQ(scene.materials[2].type, MaterialType::principled);
+    expect_vec3_near(scene.materials[2].base_color, {0.8f, 0.1f, 0.1f});
+    EXPECT_EQ(scene.materials[2].metallic, 0.0f);
+    EXPECT_EQ(scene.materials[2].roughness, 1.0f);
     EXPECT_EQ(scene.materials[3].name, "m.gltf/lamp");
+    EXPECT_EQ(scene.materials[3].type, MaterialType::principled);
     EXPECT_EQ(scene.materials[3].emission, glm::vec3(1, 2, 3));
-    EXPECT_EQ(scene.materials[4].type, MaterialType::glass);
+    // Transmission with glTF's default roughnessFactor, 1: frosted glass.
+    EXPECT_EQ(scene.materials[4].type, MaterialType::rough_glass);
+    EXPECT_FLOAT_EQ(scene.materials[4].roughness, 1.0f);
     EXPECT_FLOAT_EQ(scene.materials[4].ior, 1.4f);
-    EXPECT_EQ(scene.materials[5].type, MaterialType::mirror);
-    expect_vec3_near(scene.materials[5].reflectance, glm::vec3(0.9f));
+    // Metallic 1, roughness 0: the smooth conductor of F0 baseColorFactor.
+    EXPECT_EQ(scene.materials[5].type, MaterialType::conductor);
+    expect_vec3_near(scene.materials[5].f0, glm::vec3(0.9f));
     ASSERT_EQ(scene.meshes.size(), 4u);
     EXPECT_EQ(scene.meshes[0].material, 2u);
     EXPECT_EQ(scene.meshes[1].material, 3u);

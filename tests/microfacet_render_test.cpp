@@ -10,14 +10,17 @@
 
 #include <gtest/gtest.h>
 
-#include "core/scene_file/scene_error.h"
 #include "core/scene_file/scene_loader.h"
+#include "material_scene_file.h"
 #include "render_helpers.h"
 #include "statistics.h"
 #include "test_scenes.h"
 
 namespace wt {
 namespace {
+
+using test::expect_refused;
+using test::scene_with_sphere_material;
 
 Material rough(MaterialType type, float roughness, float ior = 1.5f) {
     Material m;
@@ -117,23 +120,6 @@ TEST(MicrofacetRender, SameBitsFromEveryScheduleWithLightTracingAndPhotons) {
 }
 
 // Roughness 0 from the scene file is today's mirror and glass: the same image bits.
-std::string scene_with_sphere_material(const std::string& material) {
-    return R"({
-      "camera": {"eye": [0, 0, 0], "look_at": [1, 0, 0]},
-      "render": {"width": 12, "height": 10, "spp": 4},
-      "materials": {
-        "wall": {"type": "lambertian", "albedo": [0.6, 0.5, 0.4]},
-        "light": {"type": "lambertian", "albedo": [0, 0, 0], "emission": [5, 5, 5]},
-        "ball": )" + material + R"(
-      },
-      "shapes": [
-        {"type": "sphere", "center": [3, 0, 0], "radius": 1, "material": "ball"},
-        {"type": "quad", "vertices": [[5, -3, -2], [5, 3, -2], [5, 3, 3], [5, -3, 3]], "material": "wall"},
-        {"type": "quad", "vertices": [[4, -1, 2.5], [2, -1, 2.5], [2, 1, 2.5], [4, 1, 2.5]], "material": "light"}
-      ]
-    })";
-}
-
 TEST(MicrofacetRender, RoughnessZeroIsTheMirrorAndTheGlassBitForBit) {
     const auto render = [](const std::string& material) {
         return test::render_film(parse_scene_json(scene_with_sphere_material(material), "test.json"), Integrator::wavefront).film;
@@ -164,14 +150,6 @@ TEST(MicrofacetSceneFile, ReadsTheKeys) {
     EXPECT_FLOAT_EQ(g.materials[2].ior, 1.33f);
 }
 
-void expect_refused(const std::string& material, const std::string& expected) {
-    try {
-        parse_scene_json(scene_with_sphere_material(material), "test.json");
-        ADD_FAILURE() << "no SceneError for " << material;
-    } catch (const SceneError& e) {
-        EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
-    }
-}
 
 TEST(MicrofacetSceneFile, RefusesBadValuesNamingTheField) {
     expect_refused(R"({"type": "conductor", "roughness": 1.5})", "materials.ball.roughness: must be in [0, 1], got 1.5");

@@ -525,7 +525,7 @@ TEST(SceneErrors, MissingIor) {
 
 TEST(SceneErrors, MissingMaterialType) {
     expect_scene_error(mutated([](Json& j) { j["materials"]["white"].erase("type"); }),
-                       "materials.white.type: required key is missing (one of lambertian, oren_nayar, mirror, glass, conductor, rough_glass)");
+                       "materials.white.type: required key is missing (one of lambertian, oren_nayar, mirror, glass, conductor, rough_glass, principled)");
 }
 
 TEST(SceneErrors, MissingShapeType) {
@@ -646,7 +646,7 @@ TEST(SceneErrors, TooLargeForAFloat) {
 
 TEST(SceneErrors, UnknownMaterialType) {
     expect_scene_error(mutated([](Json& j) { j["materials"]["white"]["type"] = "plastic"; }),
-                       "materials.white.type: unknown material type (allowed: lambertian, oren_nayar, mirror, glass, conductor, rough_glass), "
+                       "materials.white.type: unknown material type (allowed: lambertian, oren_nayar, mirror, glass, conductor, rough_glass, principled), "
                        "got string \"plastic\"");
 }
 

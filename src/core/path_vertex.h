@@ -100,12 +100,14 @@ inline glm::vec3 diffuse_bsdf_for_power(const DiffuseBsdfAtView& bsdf, const Lig
 // `t`. `bsdf_pdf` is the solid-angle pdf with which the previous vertex's BSDF sampled `ray`
 // when light samples there could have found this point too (mis only: 0 after the camera and
 // after specular bounces, where no light sample competes and the emission counts in full).
-template <typename E>
+// `kRough`: the scene may have rough materials (Scene::has_rough_materials); without them and
+// without mis no pdf is ever passed, and the test is compiled out.
+template <typename E, bool kRough = true>
 inline glm::vec3 emission_added(const Scene& scene, const Material& m, const SurfacePoint& surface, const Ray& ray, float t,
                                 const glm::vec3& throughput, float bsdf_pdf, uint32_t bounce) {
     glm::vec3 e = throughput * emitted_towards(m, surface.normal, ray.direction);
     // (Without mis only a rough bounce passes a pdf: GlossyLightSampler weights its light samples.)
-    {
+    if constexpr (E::mis || kRough) {
         if (bsdf_pdf > 0.0f && m.is_emissive()) {
             // The light samples' pdf for this point, per unit solid angle at the previous vertex.
             const float cos_light = -glm::dot(surface.normal, ray.direction);
@@ -281,7 +283,8 @@ inline uint32_t photon_vertex_limit(const Scene& scene, uint32_t bounce) {
 // Samples the next direction from the BSDF and applies Russian roulette. Empty when the path
 // ends. `bounce` is the index of the vertex being shaded (0 = first hit);
 // `specular_light_elsewhere` is the incoming ray's (PathContinuation::specular_light_elsewhere).
-template <typename E>
+// `kRough` as for emission_added: without it no sample is glossy.
+template <typename E, bool kRough = true>
 inline std::optional<PathContinuation> continue_path(const Scene& scene, const Material& m, const SurfacePoint& surface,
                                                      const glm::vec3& d, const glm::vec3& throughput, const PathSeed& path,
                                                      uint32_t bounce, bool specular_light_elsewhere) {
@@ -304,16 +307,17 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
     // Only a diffuse vertex hands the paths ending specular -> light on: light tracing connects
     // those to the camera and photons land on those. A rough vertex (s.glossy) is neither, so
     // the camera path keeps every path through it (see PathContinuation).
-    next.specular_light_elsewhere = specular_light_elsewhere || (!s.specular && !s.glossy &&
+    const bool glossy = kRough && s.glossy;
+    next.specular_light_elsewhere = specular_light_elsewhere || (!s.specular && !glossy &&
                                                                  (bounce == 0 ? scene.light_traces_caustics : scene.merges_photons));
     // A rough lobe is always weighted against its light samples, nee or mis: light samples alone
     // cannot find a sharp lobe's light, nor BSDF samples alone a small light (GlossyLightSampler).
-    next.count_environment = E::mis || s.specular || s.glossy;
+    next.count_environment = E::mis || s.specular || glossy;
     next.count_emission = next.count_environment && !(next.specular_light_elsewhere && s.specular);
     next.bsdf_pdf = 0.0f;
     if constexpr (E::mis) {
-        if (!s.specular) next.bsdf_pdf = s.glossy ? s.pdf : diffuse_direction_pdf(surface, d, s.direction);
-    } else if (s.glossy) {
+        if (!s.specular) next.bsdf_pdf = glossy ? s.pdf : diffuse_direction_pdf(surface, d, s.direction);
+    } else if (glossy) {
         next.bsdf_pdf = s.pdf;
     }
     if (int(bounce) >= scene.settings.rr_start_bounce) {

@@ -81,6 +81,8 @@ Scene build_scene(const SceneDescription& description) {
     for (const Sphere& sphere : description.spheres) {
         scene.spheres.push_back(sphere.center, sphere.radius, sphere.material);
     }
+    scene.has_rough_materials = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                            [](const Material& m) { return m.is_microfacet(); });
     scene.lights = LightTable(scene.triangles, scene.materials);
     if (!description.lights.empty()) {
         scene.listed_lights = SceneLights(description.lights, scene.lights.empty() ? 0.0 : area_light_power(scene.triangles, scene.materials),

@@ -37,6 +37,10 @@ struct Scene {
     // photons (path_vertex.h, kernels/photons): asked for, light-traced, and some diffuse
     // surface reflects light.
     bool merges_photons = false;
+    // Some material is rough (rough conductor or glass, principled): the vertex loop is compiled
+    // with the rough materials' light samples and pdfs only where this is set, so the other
+    // scenes run the loop they ran before rough materials existed (kernels/wavefront/shade_queue.h).
+    bool has_rough_materials = false;
 
     uint32_t primitive_count() const { return uint32_t(triangles.size() + spheres.size()); }
 };

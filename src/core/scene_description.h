@@ -28,6 +28,7 @@ enum class MaterialType : uint8_t {
     conductor,        // smooth metal: perfect specular reflection with a conductor's Fresnel term
     rough_conductor,  // GGX microfacet metal (core/materials/rough_conductor.h)
     rough_glass,      // GGX microfacet dielectric, reflection and refraction (core/materials/rough_dielectric.h)
+    principled,       // glTF 2.0 metallic-roughness: Lambert and GGX mixed by metallic (core/materials/principled.h)
 };
 
 struct Material {
@@ -37,11 +38,15 @@ struct Material {
     float sigma = 0.0f;           // oren_nayar roughness (radians)
     glm::vec3 reflectance{1.0f};  // mirror
     float ior = 1.5f;             // glass, relative to the surrounding medium (vacuum)
-    glm::vec3 emission{0.0f};     // radiance leaving the front face (diffuse materials only)
+    glm::vec3 emission{0.0f};     // radiance leaving the front face (diffuse and principled materials only)
     // conductor, rough_conductor, rough_glass (which also reads ior):
     float roughness = 0.0f;       // perceptual, in [0, 1]: the GGX alpha is roughness^2, as in glTF
     glm::vec3 f0{1.0f};           // conductors: reflectance at normal incidence (Schlick)
     glm::vec3 eta{0.0f}, k{0.0f}; // conductors: complex index of refraction, used instead of f0 when eta.x > 0
+    // principled (which also reads roughness, ior and emission). Not albedo: the diffuse
+    // materials' light sampler and the photons read that, and this lobe is not theirs.
+    glm::vec3 base_color{0.0f};   // glTF's baseColorFactor, in [0, 1]
+    float metallic = 0.0f;        // glTF's metallicFactor, in [0, 1]
 
     bool is_emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
     bool is_specular() const { return type >= MaterialType::mirror && type <= MaterialType::conductor; }

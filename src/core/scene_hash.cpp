@@ -56,6 +56,7 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         h.value(m.type), h.value(m.albedo), h.value(m.sigma), h.value(m.reflectance), h.value(m.ior), h.value(m.emission);
         // Only the types that read them: the other materials keep the hashes they had.
         if (m.type >= MaterialType::conductor) h.value(m.roughness), h.value(m.f0), h.value(m.eta), h.value(m.k);
+        if (m.type == MaterialType::principled) h.value(m.base_color), h.value(m.metallic);
     }
     h.word(d.meshes.size());
     for (const TriangleMesh& mesh : d.meshes) {

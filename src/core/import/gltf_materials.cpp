@@ -1,6 +1,9 @@
 #include "core/import/gltf_materials.h"
 
+#include <glm/common.hpp>
+
 #include "core/import/material_mapping.h"
+#include "core/materials/microfacet_material.h"
 
 namespace wt {
 namespace {
@@ -22,26 +25,25 @@ glm::vec3 rgb(const std::vector<double>& factor, float fallback) {
 
 ImportedMaterial map_gltf_material(const tinygltf::Material& m) {
     ImportedMaterial out;
-    Material& mat = out.material;
-    mat.name = m.name;
     const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
-    const glm::vec3 base = rgb(pbr.baseColorFactor, 1.0f);
+    const glm::vec3 base = reflectance_from_file(rgb(pbr.baseColorFactor, 1.0f), "baseColorFactor", out);
+    const float roughness = fraction_from_file(pbr.roughnessFactor, "roughnessFactor", out);
+    const double ior_factor = extension_number(m, "KHR_materials_ior", "ior", 1.5);
+    const float ior = ior_factor > 0.0 ? float(ior_factor) : 1.5f;
+    const double strength = extension_number(m, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
+    const glm::vec3 emission = rgb(m.emissiveFactor, 0.0f) * float(strength);
     const double transmission = extension_number(m, "KHR_materials_transmission", "transmissionFactor", 0.0);
     if (transmission > 0.0) {
-        mat.type = MaterialType::glass;
-        const double ior = extension_number(m, "KHR_materials_ior", "ior", 1.5);
-        if (ior > 0.0) mat.ior = float(ior);
-        if (transmission < 1.0) out.unmapped.push_back("transmissionFactor < 1 (rendered as clear glass)");
-    } else if (pbr.metallicFactor >= 1.0 && pbr.roughnessFactor <= 0.0) {
-        mat.type = MaterialType::mirror;
-        mat.reflectance = reflectance_from_file(base, "baseColorFactor", out);
+        out.material.type = dielectric_type(roughness, ior);
+        out.material.roughness = roughness;
+        out.material.ior = ior;
+        if (transmission < 1.0) out.unmapped.push_back("transmissionFactor < 1 (rendered as fully transmitting glass)");
+        emission_from_file(emission, "emissiveFactor", out);
     } else {
-        mat.type = MaterialType::lambertian;
-        mat.albedo = reflectance_from_file(base, "baseColorFactor", out);
-        if (pbr.metallicFactor > 0.0) out.unmapped.push_back("metallicFactor > 0 (rendered as diffuse)");
+        const float metallic = fraction_from_file(pbr.metallicFactor, "metallicFactor", out);
+        out.material = principled_material(base, metallic, roughness, ior, glm::max(emission, glm::vec3(0.0f)));
     }
-    const double strength = extension_number(m, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
-    emission_from_file(rgb(m.emissiveFactor, 0.0f) * float(strength), "emissiveFactor", out);
+    out.material.name = m.name;
     if (m.alphaMode != "OPAQUE") out.unmapped.push_back("alphaMode " + m.alphaMode);
 
     const struct { int index; const char* name; } textures[] = {

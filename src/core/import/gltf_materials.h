@@ -8,10 +8,12 @@
 
 namespace wt {
 
-// KHR_materials_transmission with a factor > 0: glass (ior from KHR_materials_ior, else 1.5).
-// metallicFactor 1 and roughnessFactor 0: mirror with reflectance baseColorFactor. Otherwise
-// Lambertian with albedo baseColorFactor. emissiveFactor (times emissiveStrength) is the
-// emission. Textures, partial metalness and alpha are recorded as not mapped.
+// KHR_materials_transmission with a factor > 0: glass, rough at roughnessFactor > 0 (ior from
+// KHR_materials_ior, else 1.5). Otherwise the metallic-roughness material itself (principled,
+// core/materials/principled.h) from baseColorFactor, metallicFactor, roughnessFactor and the
+// ior, which with metallic 1 is the conductor of F0 baseColorFactor. emissiveFactor (times
+// emissiveStrength) is the emission. Textures, alpha and partial transmission are recorded as
+// not mapped; doubleSided is not read (both sides of every surface scatter, as in Cycles).
 ImportedMaterial map_gltf_material(const tinygltf::Material& m);
 
 }  // namespace wt

@@ -2,7 +2,12 @@
 
 #include <sstream>
 
+#include <cmath>
+
+#include <glm/common.hpp>
+
 #include "core/import/material_mapping.h"
+#include "core/materials/microfacet_material.h"
 #include "core/regular_file.h"
 
 namespace wt {
@@ -20,24 +25,53 @@ std::string read_mtl_file(const std::string& path, std::vector<tinyobj::material
     return "";
 }
 
+namespace {
+
+// Phong's exponent Ns to perceptual roughness as Blender's OBJ importer converts it,
+// 1 - sqrt(Ns / 1000) with Ns clamped to [0, 1000]: the inverse of what Blender's exporter
+// writes (Ns = 1000 (1 - roughness)^2), so a material exported from Blender comes back with its
+// roughness, and renders as Cycles renders the same file through Blender's importer.
+float roughness_from_phong_exponent(float ns) {
+    const float clamped = ns >= 0.0f ? (ns <= 1000.0f ? ns : 1000.0f) : 0.0f;
+    return 1.0f - std::sqrt(clamped / 1000.0f);
+}
+
+}  // namespace
+
 ImportedMaterial map_obj_material(const tinyobj::material_t& m) {
     ImportedMaterial out;
-    Material& mat = out.material;
-    mat.name = m.name;
     const glm::vec3 kd(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
     const glm::vec3 ks(m.specular[0], m.specular[1], m.specular[2]);
+    const glm::vec3 ke = glm::max(glm::vec3(m.emission[0], m.emission[1], m.emission[2]), glm::vec3(0.0f));
+    // tinyobjloader leaves Pr and Pm at 0 when a file has neither, so "Pr 0 Pm 0" reads as no PBR keys.
+    const bool pbr = m.roughness != 0.0f || m.metallic != 0.0f;
+    const bool highlight = m.illum != 0 && m.illum != 1 && (ks.x > 0.0f || ks.y > 0.0f || ks.z > 0.0f);
     if (m.illum == 3 || m.illum == 5) {
-        mat.type = MaterialType::mirror;
-        mat.reflectance = reflectance_from_file(ks, "Ks", out);
+        out.material.type = MaterialType::mirror;
+        out.material.reflectance = reflectance_from_file(ks, "Ks", out);
     } else if (m.illum == 4 || m.illum == 6 || m.illum == 7) {
-        mat.type = MaterialType::glass;
-        if (m.ior > 0.0f) mat.ior = m.ior;
+        const float roughness = fraction_from_file(m.roughness, "Pr", out);
+        float ior = 1.5f;
+        if (m.ior > 0.0f) ior = m.ior;
         else out.unmapped.push_back("Ni " + std::to_string(m.ior) + " (not positive: ior 1.5 used)");
+        out.material.type = dielectric_type(roughness, ior);
+        out.material.roughness = roughness;
+        out.material.ior = ior;
+    } else if (pbr || highlight) {
+        // The PBR extension's Pr and Pm where given, else Phong's highlight as a dielectric's
+        // specular lobe of roughness from Ns; Ks's colour and strength have no place in glTF's
+        // model (its dielectric reflects F0 0.04, from ior 1.5), so only its presence counts.
+        const glm::vec3 base = reflectance_from_file(kd, "Kd", out);
+        const float metallic = pbr ? fraction_from_file(m.metallic, "Pm", out) : 0.0f;
+        const float roughness = pbr ? fraction_from_file(m.roughness, "Pr", out) : roughness_from_phong_exponent(m.shininess);
+        if (!pbr) out.unmapped.push_back("Ks (the specular is a dielectric's, F0 0.04; Ns gave its roughness)");
+        out.material = principled_material(base, metallic, roughness, 1.5f, ke);
     } else {
-        mat.type = MaterialType::lambertian;
-        mat.albedo = reflectance_from_file(kd, "Kd", out);
+        out.material.type = MaterialType::lambertian;
+        out.material.albedo = reflectance_from_file(kd, "Kd", out);
     }
-    emission_from_file(glm::vec3(m.emission[0], m.emission[1], m.emission[2]), "Ke", out);
+    out.material.name = m.name;
+    emission_from_file(ke, "Ke", out);
 
     const struct { const std::string& name; const char* key; } textures[] = {
         {m.ambient_texname, "map_Ka"},   {m.diffuse_texname, "map_Kd"},     {m.specular_texname, "map_Ks"},

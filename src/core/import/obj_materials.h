@@ -12,8 +12,10 @@
 namespace wt {
 
 // illum 3 or 5 (ray-traced reflection): mirror with reflectance Ks. illum 4, 6 or 7
-// (refraction): glass with ior Ni. Otherwise Lambertian with albedo Kd. Ke is the emission.
-// Texture maps are recorded as not mapped.
+// (refraction): glass with ior Ni, rough at Pr > 0. Otherwise, with the PBR extension's Pr or
+// Pm (either non-zero), glTF's metallic-roughness material of base colour Kd; with a highlight
+// (illum 2 or above and Ks not black) that material as a plastic, metallic 0 and roughness from
+// Ns; else Lambertian with albedo Kd. Ke is the emission. Texture maps are recorded as not mapped.
 ImportedMaterial map_obj_material(const tinyobj::material_t& m);
 
 // Appends the materials of the MTL file at `path` to `materials`, and their names to `ids` (a

@@ -1,5 +1,5 @@
 #pragma once
-// The rough materials (rough_conductor, rough_glass) in world space, as the path vertices use
+// The rough materials (rough_conductor, rough_glass, principled) in world space, as the path vertices use
 // them: seen from one direction wo, evaluated for many wi (the light samples), or sampled (the
 // next direction). Their lobes are neither diffuse nor specular: see core/path_vertex.h for how
 // the integrators treat them.
@@ -17,6 +17,7 @@
 #include "core/accuracy.h"
 #include "core/materials/bsdf_sample.h"
 #include "core/materials/conductor_fresnel.h"
+#include "core/materials/principled.h"
 #include "core/materials/rough_conductor.h"
 #include "core/materials/rough_dielectric.h"
 #include "core/sampling/sampling.h"
@@ -44,8 +45,10 @@ public:
           n_geom_(n_geom),
           wo_(to_local(frame_, wo)),
           dielectric_(m.type == MaterialType::rough_glass),
+          principled_(m.type == MaterialType::principled),
           conductor_(ggx_alpha(m.roughness), conductor_fresnel(m)),
-          glass_(ggx_alpha(m.roughness), m.ior, front, fresnel) {}
+          glass_(ggx_alpha(m.roughness), m.ior, front, fresnel),
+          mixed_(m.base_color, m.metallic, ggx_alpha(m.roughness), m.ior, wo_) {}
 
     bool transmits() const { return dielectric_; }
 
@@ -54,6 +57,7 @@ public:
         const glm::vec3 local = to_local(frame_, wi);
         if (!sides_agree(wi, local)) return glm::vec3(0.0f);
         const float cos_i = std::abs(local.z);
+        if (principled_) return mixed_.f(wo_, local) * cos_i;
         return dielectric_ ? glm::vec3(glass_.f(wo_, local) * cos_i) : conductor_.f(wo_, local) * cos_i;
     }
 
@@ -61,13 +65,16 @@ public:
     float pdf(const glm::vec3& wi) const {
         const glm::vec3 local = to_local(frame_, wi);
         if (!sides_agree(wi, local)) return 0.0f;
+        if (principled_) return mixed_.pdf(wo_, local);
         return dielectric_ ? glass_.pdf(wo_, local) : conductor_.pdf(wo_, local);
     }
 
     BsdfSample sample(float u0, float u1, float u_choice) const {
         BsdfSample s;
         if (!(wo_.z > 0.0f)) return s;  // wo at the horizon after rounding
-        const MicrofacetSample m = dielectric_ ? glass_.sample(wo_, u0, u1, u_choice) : conductor_.sample(wo_, u0, u1);
+        const MicrofacetSample m = principled_  ? mixed_.sample(wo_, u0, u1, u_choice)
+                                   : dielectric_ ? glass_.sample(wo_, u0, u1, u_choice)
+                                                 : conductor_.sample(wo_, u0, u1);
         if (!m.valid) return s;
         s.direction = glm::normalize(frame_.to_world(m.wi));
         if (!sides_agree(s.direction, to_local(frame_, s.direction))) return s;
@@ -88,8 +95,10 @@ private:
     glm::vec3 n_geom_;
     glm::vec3 wo_;  // local
     bool dielectric_;
+    bool principled_;
     RoughConductor conductor_;
     RoughDielectric glass_;
+    PrincipledBrdf mixed_;  // after wo_, which it reads
 };
 
 // sample_bsdf for a rough material: n_geom is the geometric normal (outward, as glass reads

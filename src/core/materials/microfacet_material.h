@@ -7,6 +7,13 @@
 // An index-matched glass (ior 1) bends and reflects nothing whatever its microfacets, and its
 // rough form would have a refraction lobe that is a delta (Walter's Jacobian divides by zero):
 // it loads as the smooth glass, which passes light straight through with weight 1.
+//
+// glTF's metallic-roughness material (principled.h) with metallic 1 is the specification's
+// metal_brdf alone, which is the conductor with F0 = baseColor: it loads as that (the smooth
+// conductor at roughness 0, so a white one is the mirror bit for bit), unless it emits, which
+// only the diffuse and principled materials do. Any other metallic keeps both lobes, and at
+// roughness 0 the specular lobe is the sharpest rough one (kMinGgxAlpha), not a delta: a
+// delta beside a diffuse lobe would make the vertex both specular and not.
 
 #include "core/scene_description.h"
 
@@ -18,6 +25,24 @@ inline MaterialType conductor_type(float roughness) {
 
 inline MaterialType dielectric_type(float roughness, float ior) {
     return roughness > 0.0f && ior != 1.0f ? MaterialType::rough_glass : MaterialType::glass;
+}
+
+// The factors in range (the loaders check or clamp them); the name is left to the caller.
+inline Material principled_material(const glm::vec3& base_color, float metallic, float roughness, float ior,
+                                    const glm::vec3& emission) {
+    Material m;
+    m.roughness = roughness;
+    m.emission = emission;
+    if (metallic == 1.0f && !m.is_emissive()) {
+        m.type = conductor_type(roughness);
+        m.f0 = base_color;
+        return m;
+    }
+    m.type = MaterialType::principled;
+    m.base_color = base_color;
+    m.metallic = metallic;
+    m.ior = ior;
+    return m;
 }
 
 }  // namespace wt

@@ -11,10 +11,11 @@
 namespace wt {
 namespace {
 
-constexpr const char* kMaterialTypes = "lambertian, oren_nayar, mirror, glass, conductor, rough_glass";
+constexpr const char* kMaterialTypes = "lambertian, oren_nayar, mirror, glass, conductor, rough_glass, principled";
 
 // The type as the file names it; a conductor or rough_glass is resolved by its roughness later
-// (microfacet_material.h), so these two come back as rough_conductor and rough_glass here.
+// (microfacet_material.h), so these two come back as rough_conductor and rough_glass here, and a
+// principled with metallic 1 may load as a conductor.
 MaterialType read_material_type(const Reader& in, const Json& j, const std::string& path) {
     const std::string type = in.text(j, path);
     if (type == "lambertian") return MaterialType::lambertian;
@@ -23,6 +24,7 @@ MaterialType read_material_type(const Reader& in, const Json& j, const std::stri
     if (type == "glass") return MaterialType::glass;
     if (type == "conductor") return MaterialType::rough_conductor;
     if (type == "rough_glass") return MaterialType::rough_glass;
+    if (type == "principled") return MaterialType::principled;
     in.fail(path, std::string("unknown material type (allowed: ") + kMaterialTypes + "), got " + describe(j));
 }
 
@@ -33,13 +35,29 @@ float read_ior(const Reader& in, const Json& j, const std::string& path) {
     return value;
 }
 
+// A factor in [0, 1], as the number `v` of member `key`.
+float read_fraction(const Reader& in, const Json& v, const char* key, const std::string& path) {
+    const float value = in.number(v, member_path(path, key));
+    if (!(value >= 0.0f && value <= 1.0f)) in.fail(member_path(path, key), "must be in [0, 1], got " + describe(v));
+    return value;
+}
+
 // Perceptual roughness, 0 (smooth) by default.
 float read_roughness(const Reader& in, const Json& j, const std::string& path) {
     const Json* r = in.optional(j, "roughness");
-    if (!r) return 0.0f;
-    const float value = in.number(*r, member_path(path, "roughness"));
-    if (!(value >= 0.0f && value <= 1.0f)) in.fail(member_path(path, "roughness"), "must be in [0, 1], got " + describe(*r));
-    return value;
+    return r ? read_fraction(in, *r, "roughness", path) : 0.0f;
+}
+
+// glTF's metallic-roughness parameters, all three required (glTF's defaults, metallic 1 and
+// roughness 1, are not what a scene file's author would guess); ior 1.5 and no emission by default.
+Material read_principled(const Reader& in, const Json& j, const std::string& path) {
+    const glm::vec3 base_color = in.color(in.required(j, "base_color", path), member_path(path, "base_color"), true);
+    const float metallic = read_fraction(in, in.required(j, "metallic", path), "metallic", path);
+    const float roughness = read_fraction(in, in.required(j, "roughness", path), "roughness", path);
+    const float ior = j.contains("ior") ? read_ior(in, j, path) : 1.5f;
+    const Json* e = in.optional(j, "emission");
+    return principled_material(base_color, metallic, roughness, ior,
+                               e ? in.color(*e, member_path(path, "emission"), false) : glm::vec3(0.0f));
 }
 
 // A conductor's Fresnel term: f0 (Schlick; white if nothing is given) or a complex index
@@ -71,9 +89,9 @@ Material read_material(const Reader& in, const std::string& name, const Json& j,
     const std::string type_name = j.at("type").get<std::string>();
 
     // The renderer only samples emission on diffuse surfaces; a glowing mirror would be ignored.
-    if ((m.is_specular() || m.is_microfacet()) && j.contains("emission"))
+    if ((m.is_specular() || m.is_microfacet()) && m.type != MaterialType::principled && j.contains("emission"))
         in.fail(member_path(path, "emission"), "emission is not supported on " + type_name +
-                                                   " materials (only lambertian and oren_nayar can emit)");
+                                                   " materials (only lambertian, oren_nayar and principled can emit)");
 
     const std::string context = " for a " + type_name + " material";
     switch (m.type) {
@@ -84,6 +102,15 @@ Material read_material(const Reader& in, const std::string& name, const Json& j,
     case MaterialType::conductor:
     case MaterialType::rough_conductor: in.check_keys(j, path, {"type", "f0", "eta", "k", "roughness"}, context); break;
     case MaterialType::rough_glass: in.check_keys(j, path, {"type", "ior", "roughness"}, context); break;
+    case MaterialType::principled:
+        in.check_keys(j, path, {"type", "base_color", "metallic", "roughness", "ior", "emission"}, context);
+        break;
+    }
+    if (m.type == MaterialType::principled) {
+        const std::string name_kept = m.name;
+        m = read_principled(in, j, path);
+        m.name = name_kept;
+        return m;
     }
 
     if (m.type == MaterialType::lambertian || m.type == MaterialType::oren_nayar) {

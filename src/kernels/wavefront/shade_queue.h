@@ -17,11 +17,14 @@ namespace wt {
 
 // The same vertex logic as trace_reference_path, in the same order (emission, then light
 // samples, then the continuation; the photons' estimate, where one is gathered, after the
-// emission), so both integrators add a path's terms identically. kListedLights: the scene
-// has a "lights" list (Scene::listed_lights): its light samplers, and what escaping rays see, in
-// place of the area lights' alone (stage_shade_listed_lights.cpp; the loop without it compiles
-// as before).
-template <typename E, bool kRecordAovs, bool kListedLights = false>
+// emission), so both integrators add a path's terms identically. kRough: the scene has rough
+// (microfacet) materials (Scene::has_rough_materials), whose vertices are tested for at run
+// time; without them the loop compiles as it did before they existed (stage_shade_rough.cpp).
+// kListedLights: the scene has a "lights" list (Scene::listed_lights): its light samplers, and
+// what escaping rays see, in place of the area lights' alone (stage_shade_listed_lights.cpp,
+// always with kRough: a scene with a lights list is rare enough to test its materials at run
+// time, and a fourth set of instantiations would cost every build for nothing).
+template <typename E, bool kRecordAovs, bool kRough, bool kListedLights = false>
 void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
                  RayQueue& next_rays, ShadowQueue& shadows, const PhotonMaps* photons) {
     const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
@@ -54,9 +57,11 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         }
         const uint8_t flags = rays.count_emission[i];
         if (flags & RayQueue::kCountEmission)
-            paths.add_radiance(slot, emission_added<E>(scene, m, surface, ray, hit.t, throughput,
-                                                       E::mis || (flags & RayQueue::kRoughPdf) ? rays.bsdf_pdf[i] : 0.0f,
-                                                       bounce));
+            paths.add_radiance(slot, emission_added<E, kRough>(scene, m, surface, ray, hit.t, throughput,
+                                                               E::mis || (kRough && (flags & RayQueue::kRoughPdf))
+                                                                   ? rays.bsdf_pdf[i]
+                                                                   : 0.0f,
+                                                               bounce));
         const bool elsewhere = flags & RayQueue::kSpecularLightElsewhere;
         if (photons && gathers_photons(scene, m, bounce, elsewhere))
             paths.add_radiance(slot, throughput * gather_photons(photons->map(path.sample), m, surface, ray.direction,
@@ -69,11 +74,11 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
             const DirectLightSampler<E> lights(scene, m, surface, light_sampling_point(surface, ray.direction),
                                                ray.direction, throughput, path, bounce, shadow_ray_count);
             lights.sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
-        } else if (has_lights && m.is_microfacet()) {
+        } else if (kRough && has_lights && m.is_microfacet()) {
             GlossyLightSampler<E>(scene, m, surface, ray.direction, throughput, path, bounce, shadow_ray_count)
                 .sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
         }
-        const auto next = continue_path<E>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere);
+        const auto next = continue_path<E, kRough>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere);
         if (next) {
             next_rays.push<E::mis>(*next, slot);
             if constexpr (kListedLights)
@@ -84,11 +89,11 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
 
 
 // (Two macros, not one calling the other: E's commas would split it into more arguments.)
-#define WT_SHADE_QUEUE_SIGNATURE(E, record_aovs)                                                                          \
-    void shade_queue<E, record_aovs, false>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&,         \
-                                            RayQueue&, ShadowQueue&, const PhotonMaps*)
+#define WT_SHADE_QUEUE_SIGNATURE(E, record_aovs, rough)                                                                   \
+    void shade_queue<E, record_aovs, rough, false>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&,  \
+                                                   RayQueue&, ShadowQueue&, const PhotonMaps*)
 #define WT_SHADE_QUEUE_SIGNATURE_LIGHTS(E, record_aovs)                                                                   \
-    void shade_queue<E, record_aovs, true>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&,          \
-                                           RayQueue&, ShadowQueue&, const PhotonMaps*)
+    void shade_queue<E, record_aovs, true, true>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&,    \
+                                                 RayQueue&, ShadowQueue&, const PhotonMaps*)
 
 }  // namespace wt

@@ -6,6 +6,6 @@
 
 namespace wt {
 
-template WT_SHADE_QUEUE_SIGNATURE(DefaultEstimator, true);
+template WT_SHADE_QUEUE_SIGNATURE(DefaultEstimator, true, false);
 
 }  // namespace wt

@@ -3,7 +3,7 @@
 
 namespace wt {
 
-#define WT_INSTANTIATE_SHADE_QUEUE(sampler, lights, clamps) template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), false);
+#define WT_INSTANTIATE_SHADE_QUEUE(sampler, lights, clamps) template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), false, false);
 WT_FOR_EACH_OPTIONAL_ESTIMATOR(WT_INSTANTIATE_SHADE_QUEUE)
 
 }  // namespace wt

@@ -5,7 +5,7 @@
 namespace wt {
 
 #define WT_INSTANTIATE_SHADE_QUEUE_AOVS(sampler, lights, clamps) \
-    template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), true);
+    template WT_SHADE_QUEUE_SIGNATURE(WT_ESTIMATOR(sampler, lights, clamps), true, false);
 WT_FOR_EACH_OPTIONAL_ESTIMATOR(WT_INSTANTIATE_SHADE_QUEUE_AOVS)
 
 }  // namespace wt
