@@ -12,6 +12,7 @@
 #include "core/camera.h"
 #include "core/scene.h"
 #include "core/sampling/samplers.h"
+#include "camera_importance.h"
 #include "scene_test_helpers.h"
 
 namespace wt {
@@ -77,15 +78,8 @@ TEST(ThinLens, ImportanceFromAnOffCentreLensPointIntegratesToThePixelCount) {
     const Camera camera(lens_camera(0.3f), width, height);
     const glm::vec3 lens = camera.lens_point({0.9f, 0.2f});
     EXPECT_GT(glm::length(lens - camera.eye()), 0.1f);
-    const int n = 1000;
-    double total = 0.0;
-    for (int a = 0; a < n; ++a)
-        for (int b = 0; b < n; ++b) {
-            const double z = 1.0 - 2.0 * (a + 0.5) / n, phi = 2.0 * M_PI * (b + 0.5) / n, s = std::sqrt(1.0 - z * z);
-            const glm::vec3 dir(float(s * std::cos(phi)), float(s * std::sin(phi)), float(z));
-            if (const auto p = camera.film_point_through_lens(lens + dir, lens, 0.0f))
-                total += double(p->importance) * 4.0 * M_PI / (double(n) * n);
-        }
+    const double total =
+        test::importance_over_the_sphere([&](const glm::vec3& dir) { return camera.film_point_through_lens(lens + dir, lens, 0.0f); });
     EXPECT_NEAR(total, double(width * height), 0.01 * width * height);
     // Half a pixel left of the image: off the film, unless a margin widens it.
     const glm::vec3 beyond = lens + camera.generate_ray(-0.5f, 3.0f, {0.9f, 0.2f}).direction;
