@@ -15,6 +15,7 @@
 #include "core/film/checkpoint.h"
 #include "core/version.h"
 #include "kernels/caustics/light_path.h"
+#include "camera_importance.h"
 #include "mirror_caustic.h"
 #include "render_helpers.h"
 #include "statistics.h"
@@ -250,16 +251,8 @@ TEST(Camera, FilmPointInvertsGenerateRayAndItsImportanceIntegratesToThePixelCoun
         EXPECT_NEAR(p->y, fy, 1e-3f);
     }
     EXPECT_FALSE(camera.film_point(camera.eye() - camera.forward()).has_value());  // behind the eye
-    // The importance integrates over the directions to one per pixel: sum over a uniform grid of
-    // the sphere of directions, importance x solid angle, counts width x height.
-    const int n = 1000;
-    double total = 0.0;
-    for (int a = 0; a < n; ++a)
-        for (int b = 0; b < n; ++b) {
-            const double z = 1.0 - 2.0 * (a + 0.5) / n, phi = 2.0 * M_PI * (b + 0.5) / n, s = std::sqrt(1.0 - z * z);
-            const glm::vec3 dir(float(s * std::cos(phi)), float(s * std::sin(phi)), float(z));
-            if (const auto p = camera.film_point(camera.eye() + dir)) total += double(p->importance) * 4.0 * M_PI / (double(n) * n);
-        }
+    // The importance integrates over the directions to one per pixel.
+    const double total = test::importance_over_the_sphere([&](const glm::vec3& dir) { return camera.film_point(camera.eye() + dir); });
     EXPECT_NEAR(total, double(width * height), 0.01 * width * height);
 }
 

@@ -393,14 +393,15 @@ TEST(SceneErrors, UnknownTopLevelKey) {
 
 TEST(SceneErrors, UnknownCameraKey) {
     expect_scene_error(mutated([](Json& j) { j["camera"]["fov"] = 60; }),
-                       "camera.fov: unknown key (allowed: eye, look_at, up, fov_degrees)");
+                       "camera.fov: unknown key (allowed: eye, look_at, up, fov_degrees, projection, width_world, aperture_radius, "
+                       "focus_distance, focus_on)");
 }
 
 TEST(SceneErrors, UnknownRenderKey) {
     expect_scene_error(mutated([](Json& j) { j["render"]["samples"] = 4; }),
                        "render.samples: unknown key (allowed: width, height, spp, shadow_rays, seed, max_bounces, "
                        "rr_start_bounce, triangle_test, sphere_test, fresnel, sampler, light_sampling, clamp_indirect, caustics, "
-                       "light_paths_per_pixel, photon_radius, adaptive_threshold, adaptive_min_spp)");
+                       "light_paths_per_pixel, photon_radius, adaptive_threshold, adaptive_min_spp, filter, filter_width)");
 }
 
 TEST(SceneErrors, UnknownAccuracyChoice) {

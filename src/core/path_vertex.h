@@ -25,14 +25,17 @@ inline PathSeed path_seed(const Scene& scene, uint32_t pixel, uint32_t sample) {
     return {E::Sampler::key_of(scene.settings.seed, pixel, sample), sample};
 }
 
-// The camera ray of the path's sample in pixel `pixel` (row-major index), placed in the pixel
-// by the sampler.
+// The camera ray of the path's sample in pixel `pixel` (row-major index), placed about the
+// pixel by the sampler and the pixel filter (core/film/pixel_filter.h), and on the lens for a
+// thin lens: the pinhole draws no lens sample.
 template <typename E>
 inline Ray camera_ray(const Scene& scene, uint32_t pixel, const PathSeed& path) {
     const uint32_t width = uint32_t(scene.settings.width);
     const typename E::Sampler random(path, 0, uint32_t(scene.settings.shadow_rays));
-    const glm::vec2 offset = random.pixel_offset(scene.settings.seed, pixel, path.sample);
-    return scene.camera.generate_ray(float(pixel % width) + offset.x, float(pixel / width) + offset.y);
+    const glm::vec2 offset = scene.pixel_filter.offset(random.pixel_offset(scene.settings.seed, pixel, path.sample));
+    const float x = float(pixel % width) + offset.x, y = float(pixel / width) + offset.y;
+    if (!scene.camera.has_lens()) return scene.camera.generate_ray(x, y);
+    return scene.camera.generate_ray(x, y, E::Sampler::lens_position(path, scene.settings.seed, pixel));
 }
 
 // Radiance emitted towards the incoming ray: lights are one-sided, emitting on the side their

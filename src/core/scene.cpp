@@ -11,6 +11,9 @@ namespace wt {
 
 bool light_traces_caustics(const SceneDescription& d) {
     if (d.settings.estimator.caustics == CausticPaths::path) return false;  // photons are light tracing's paths too
+    // An orthographic camera's rays share one direction: no light path can be joined to it, so its
+    // caustics are the camera paths' (the loader refuses asking for light tracing with it).
+    if (d.camera.projection == Projection::orthographic) return false;
     const auto has = [&](bool (Material::*property)() const) {
         const auto used = [&](uint32_t material) { return (d.materials[material].*property)(); };
         return std::any_of(d.meshes.begin(), d.meshes.end(),
@@ -50,6 +53,7 @@ Scene build_scene(const SceneDescription& description) {
     Scene scene;
     scene.settings = description.settings;
     scene.camera = Camera(description.camera, description.settings.width, description.settings.height);
+    scene.pixel_filter = PixelFilter(description.settings.filter);
     scene.materials = description.materials;
     // Parallelograms first (TriangleSoA keeps them as a prefix), and only for the test that
     // knows them. A mesh with vertex normals stays triangles: there is no interpolating them

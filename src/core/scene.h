@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/camera.h"
+#include "core/film/pixel_filter.h"
 #include "core/geometry_soa.h"
 #include "core/light_table.h"
 #include "core/lights/scene_lights.h"
@@ -22,6 +23,7 @@ namespace wt {
 struct Scene {
     RenderSettings settings;
     Camera camera;
+    PixelFilter pixel_filter;  // where in and about its pixel each camera sample lands
     std::vector<Material> materials;
     TriangleSoA triangles;
     ShadingNormalTable shading_normals;  // empty unless some mesh has vertex normals

@@ -14,6 +14,7 @@
 #include "core/accuracy.h"
 #include "core/adaptive_settings.h"
 #include "core/estimator_settings.h"
+#include "core/film/pixel_filter_settings.h"
 
 namespace wt {
 
@@ -105,11 +106,22 @@ struct LightDescription {
     float angle_degrees = 0.0f;  // directional: angular diameter of the source, [0, 180); 0 = a delta
 };
 
+enum class Projection : uint8_t {
+    perspective,   // a pinhole, or a thin lens with aperture_radius > 0
+    orthographic,  // parallel rays along the view axis from a window width_world wide
+};
+
 struct CameraDescription {
     glm::vec3 eye{0.0f};
     glm::vec3 look_at{1.0f, 0.0f, 0.0f};
     glm::vec3 up{0.0f, 0.0f, 1.0f};
-    float fov_degrees = 90.0f;
+    float fov_degrees = 90.0f;  // perspective: the vertical field of view
+    Projection projection = Projection::perspective;
+    // Thin lens (perspective only): 0 is the pinhole. Points at focus_distance along the view
+    // axis are sharp; 0 there means |look_at - eye| (the loader resolves "focus_on" into it).
+    float aperture_radius = 0.0f;
+    float focus_distance = 0.0f;
+    float width_world = 0.0f;  // orthographic: the image's width in scene units
 };
 
 struct RenderSettings {
@@ -126,6 +138,7 @@ struct RenderSettings {
     AccuracySettings accuracy;
     EstimatorSettings estimator;
     AdaptiveSettings adaptive;  // off by default
+    PixelFilterSettings filter;  // box of width 1: each sample uniform in its pixel
 };
 
 struct SceneDescription {

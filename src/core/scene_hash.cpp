@@ -50,6 +50,10 @@ private:
 uint64_t scene_content_hash(const SceneDescription& d) {
     Hasher h;
     h.value(d.camera.eye), h.value(d.camera.look_at), h.value(d.camera.up), h.value(d.camera.fov_degrees);
+    // Only a camera that is not the pinhole: a pinhole scene keeps the hash it had.
+    if (d.camera.projection != Projection::perspective || d.camera.aperture_radius > 0.0f)
+        h.value(d.camera.projection), h.value(d.camera.width_world), h.value(d.camera.aperture_radius),
+            h.value(d.camera.focus_distance);
     h.word(d.materials.size());
     for (const Material& m : d.materials) {
         h.bytes(m.name.data(), m.name.size());  // names show in --debug-sample output

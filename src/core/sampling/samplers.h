@@ -2,7 +2,9 @@
 // The three samplers behind the `sampler` setting, one interface. A sampler is made for one
 // path vertex from the path's seed and the bounce, and gives the vertex's random numbers by the
 // dimensions of rng.h's `dim` namespace: pair(d) for dimensions d and d + 1 (d even) and
-// operator()(d) for one. At the camera, pixel_offset() places the sample in its pixel.
+// operator()(d) for one. At the camera, pixel_offset() places the sample in its pixel and, for
+// a thin lens only, lens_position() on the lens: a 2D pattern of its own, apart from every
+// vertex's dimensions (kLensBounce), so the lens is as well distributed as the pixel.
 // kCheapDraws says whether a draw whose value will not be read is worth a test to skip.
 //
 // Every value is a pure function of (seed, pixel, sample, bounce, dimension), for all three, so
@@ -27,6 +29,10 @@ struct PathSeed {
     uint32_t sample;
 };
 
+// The lens sample is drawn as if at a bounce no path reaches (max_bounces is at most 1024): its
+// hashes and, for Sobol', its scrambling and shuffling seeds are apart from every vertex's.
+constexpr uint32_t kLensBounce = 0xffffffffu;
+
 // Every dimension a hash (VertexRandom), the pixel position too.
 class IndependentSampler : public VertexRandom {
 public:
@@ -36,6 +42,10 @@ public:
 
     glm::vec2 pixel_offset(uint64_t /*seed*/, uint32_t /*pixel*/, uint32_t /*sample*/) const {
         const UniformPair p = pair(dim::camera_x);
+        return {p.first, p.second};
+    }
+    static glm::vec2 lens_position(const PathSeed& path, uint64_t /*seed*/, uint32_t /*pixel*/) {
+        const UniformPair p = VertexRandom(path.key, kLensBounce).pair(dim::camera_x);
         return {p.first, p.second};
     }
 };
@@ -60,9 +70,17 @@ public:
         const SobolPoint p = owen_scrambled_sobol_unshuffled(sample, {0u, uint32_t(h), uint32_t(h >> 32)});
         return {p.x, p.y};
     }
+    // The lens stratified as the pixel is, by a (0, 2)-sequence of its own, shuffled (sobol.h): the
+    // unshuffled one would pair the pixel's point s with the lens's point s, the same net twice.
+    static glm::vec2 lens_position(const PathSeed& path, uint64_t seed, uint32_t pixel) {
+        const uint64_t h = mix64(mix64(seed ^ kLensSalt) + uint64_t(pixel) * kGoldenGamma);
+        const SobolPoint p = owen_scrambled_sobol(path.sample, {uint32_t(mix64(h)), uint32_t(h), uint32_t(h >> 32)});
+        return {p.x, p.y};
+    }
 
 private:
     static constexpr uint64_t kStrataSalt = 0x57a7a5a17ULL;  // keeps these seeds apart from the other keys
+    static constexpr uint64_t kLensSalt = 0x1e45a17ULL;
 };
 
 // Owen-scrambled Sobol' points (sobol.h), padded: each pair of dimensions of each bounce is its
@@ -82,6 +100,11 @@ public:
 
     glm::vec2 pixel_offset(uint64_t /*seed*/, uint32_t /*pixel*/, uint32_t /*sample*/) const {
         const UniformPair p = pair(dim::camera_x);
+        return {p.first, p.second};
+    }
+    // Its own padded 2D sequence: pad 0 of the lens's bounce.
+    static glm::vec2 lens_position(const PathSeed& path, uint64_t /*seed*/, uint32_t /*pixel*/) {
+        const UniformPair p = SobolSampler(path, kLensBounce, 1).pair(dim::camera_x);
         return {p.first, p.second};
     }
 

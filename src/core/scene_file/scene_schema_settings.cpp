@@ -10,9 +10,65 @@
 
 namespace wt {
 
+namespace {
+
+// A finite number from the camera section, checked by `ok`, or the field named with `rule`.
+template <typename Ok>
+float camera_number(const Reader& in, const Json& j, const std::string& path, const char* key, Ok ok, const char* rule) {
+    const std::string key_path = member_path(path, key);
+    const float v = in.number(j, key_path);
+    if (!(std::isfinite(v) && ok(v))) in.fail(key_path, std::string("must be ") + rule + ", got " + describe(j));
+    return v;
+}
+
+// "projection", and what each one reads: the orthographic window's width, or the thin lens.
+void read_projection(const Reader& in, const Json& j, const std::string& path, CameraDescription& camera) {
+    if (const Json* projection = in.optional(j, "projection")) {
+        const std::string projection_path = member_path(path, "projection");
+        const std::string name = in.text(*projection, projection_path);
+        if (name == "orthographic") camera.projection = Projection::orthographic;
+        else if (name != "perspective")
+            in.fail(projection_path, "must be one of \"perspective\", \"orthographic\", got " + describe(*projection));
+    }
+    const auto positive = [](float v) { return v > 0.0f; };
+    if (camera.projection == Projection::orthographic) {
+        for (const char* key : {"fov_degrees", "aperture_radius", "focus_distance", "focus_on"})
+            if (in.optional(j, key))
+                in.fail(member_path(path, key), "is for the perspective camera; an orthographic one takes width_world");
+        const Json& width = in.required(j, "width_world", path);
+        camera.width_world = camera_number(in, width, path, "width_world", positive, "a positive number of scene units");
+        return;
+    }
+    if (in.optional(j, "width_world"))
+        in.fail(member_path(path, "width_world"), "is for \"projection\": \"orthographic\" only");
+    if (const Json* aperture = in.optional(j, "aperture_radius"))
+        camera.aperture_radius = camera_number(in, *aperture, path, "aperture_radius", [](float v) { return v >= 0.0f; },
+                                               "non-negative (0 is the pinhole)");
+    const Json* distance = in.optional(j, "focus_distance");
+    const Json* point = in.optional(j, "focus_on");
+    if (distance && point) in.fail(member_path(path, "focus_on"), "cannot be given with focus_distance; give one");
+    if (distance)
+        camera.focus_distance = camera_number(in, *distance, path, "focus_distance", positive,
+                                              "greater than 0 (the distance along the view axis to the sharp plane)");
+    if (point) {
+        const std::string point_path = member_path(path, "focus_on");
+        const glm::vec3 p = in.vec3(*point, point_path);
+        // The plane of focus goes through the point, square to the view axis.
+        const glm::dvec3 forward = glm::normalize(glm::dvec3(camera.look_at) - glm::dvec3(camera.eye));
+        const double depth = glm::dot(glm::dvec3(p) - glm::dvec3(camera.eye), forward);
+        if (!(float(depth) > 0.0f && std::isfinite(float(depth))))
+            in.fail(point_path, "must lie in front of the eye (its depth along the view axis is " + std::to_string(depth) +
+                                    "), got " + format_vec3(p));
+        camera.focus_distance = float(depth);
+    }
+}
+
+}  // namespace
+
 CameraDescription read_camera(const Reader& in, const Json& j, const std::string& path) {
     in.expect_object(j, path);
-    in.check_keys(j, path, {"eye", "look_at", "up", "fov_degrees"});
+    in.check_keys(j, path, {"eye", "look_at", "up", "fov_degrees", "projection", "width_world", "aperture_radius",
+                            "focus_distance", "focus_on"});
     CameraDescription camera;
     camera.eye = in.vec3(in.required(j, "eye", path), member_path(path, "eye"));
     camera.look_at = in.vec3(in.required(j, "look_at", path), member_path(path, "look_at"));
@@ -53,6 +109,7 @@ CameraDescription read_camera(const Reader& in, const Json& j, const std::string
     if (!unit(basis.right) || !unit(basis.up))
         in.fail(member_path(path, "up"), "cannot be used in 32-bit float: cross(forward, up) cannot be normalised "
                                          "(up too short or too long), got " + format_vec3(camera.up));
+    read_projection(in, j, path, camera);
     return camera;
 }
 
@@ -61,7 +118,7 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     in.check_keys(j, path, {"width", "height", "spp", "shadow_rays", "seed", "max_bounces", "rr_start_bounce",
                             "triangle_test", "sphere_test", "fresnel", "sampler", "light_sampling", "clamp_indirect",
                             "caustics", "light_paths_per_pixel", "photon_radius", "adaptive_threshold",
-                            "adaptive_min_spp"});
+                            "adaptive_min_spp", "filter", "filter_width"});
     RenderSettings s;
     const auto read_int = [&](const char* key, int& field, uint64_t lo, uint64_t hi) {
         if (const Json* v = in.optional(j, key)) field = int(in.integer(*v, member_path(path, key), lo, hi));
@@ -89,6 +146,14 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     read_choice("light_sampling", s.estimator.light_sampling, parse_light_sampling, "\"nee\", \"mis\"");
     read_choice("caustics", s.estimator.caustics, parse_caustic_paths,
                 "\"path\", \"light_tracing\", \"photons\"");
+    read_choice("filter", s.filter.kind, parse_filter_kind, "\"box\", \"gaussian\", \"blackman_harris\"");
+    s.filter.width = default_filter_width(s.filter.kind);
+    if (const Json* width = in.optional(j, "filter_width")) {
+        const std::string width_path = member_path(path, "filter_width");
+        s.filter.width = in.number(*width, width_path);
+        if (!(s.filter.width > 0.0f && s.filter.width <= kMaxFilterWidth))
+            in.fail(width_path, "must be greater than 0 and at most 16 pixels, got " + describe(*width));
+    }
     if (const Json* ratio = in.optional(j, "light_paths_per_pixel")) {
         const std::string ratio_path = member_path(path, "light_paths_per_pixel");
         s.estimator.light_paths_per_pixel = in.number(*ratio, ratio_path);

@@ -30,6 +30,8 @@ constexpr uint32_t direction_u = 2;  // with direction_v
 constexpr uint32_t emitter = 4;
 constexpr uint32_t specular_choice = 4;
 constexpr uint32_t roulette = 5;
+constexpr uint32_t lens_u = 6;        // the camera connection's point on a thin lens, with lens_v
+constexpr uint32_t splat_pixel_x = 8; // the splat's pixel under a filter wider than its pixel, with _y
 }  // namespace light_dim
 
 // Veach's correction for shading normals on paths traced from the lights (thesis, sec. 5.3.2;
@@ -93,7 +95,7 @@ LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const Ligh
     if (!m.is_specular()) {
         // A diffuse first bounce is direct light: the camera paths' light samples estimate it.
         if (vertex == 1) return out;
-        out.connection = connect_to_camera(surface, m, ray.direction, at.power * at.weight);
+        out.connection = connect_to_camera(surface, m, ray.direction, at.power * at.weight, VertexRandom(key, vertex));
         if (records_photons_) out.photon = photon_at(surface, m, vertex, ray.direction, at.power * at.weight);
     }
     // Camera paths shade no vertex from max_bounces on, so none could meet the light after more.
@@ -154,12 +156,23 @@ void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, 
 // divided by the geometric cosine the power already carries), which is also what the adjoint
 // correction makes of it (pbrt-v4's BDPT connection to the camera).
 std::optional<CameraConnection> LightPathTracer::connect_to_camera(const SurfacePoint& surface, const Material& m,
-                                                                   const glm::vec3& arriving, const glm::vec3& power) const {
+                                                                   const glm::vec3& arriving, const glm::vec3& power,
+                                                                   const VertexRandom& random) const {
     if (!gathers_direct_light(m)) return std::nullopt;  // a black surface reflects nothing to see
     const Camera& camera = scene_.camera;
-    const auto film = camera.film_point(surface.position);
+    const PixelFilter& filter = scene_.pixel_filter;
+    // A thin lens: the connection goes to a point of the lens, drawn uniformly as the camera rays' are.
+    glm::vec3 lens = camera.eye();
+    std::optional<Camera::FilmPoint> film;
+    if (camera.has_lens()) {
+        const UniformPair u = random.pair(light_dim::lens_u);
+        lens = camera.lens_point({u.first, u.second});
+        film = camera.film_point_through_lens(surface.position, lens, filter.margin());
+    } else {
+        film = camera.film_point(surface.position, filter.margin());
+    }
     if (!film) return std::nullopt;
-    const glm::vec3 to_eye = camera.eye() - surface.position;
+    const glm::vec3 to_eye = lens - surface.position;
     const float dist2 = glm::dot(to_eye, to_eye);
     if (!(dist2 > 0.0f)) return std::nullopt;
     const glm::vec3 wo = to_eye / std::sqrt(dist2);
@@ -169,12 +182,25 @@ std::optional<CameraConnection> LightPathTracer::connect_to_camera(const Surface
     if (!(cos_i > 0.0f && cos_o > 0.0f)) return std::nullopt;  // lit from behind, as the camera sees it
     const glm::vec3 f = diffuse_bsdf_for_power(DiffuseBsdfAtView(m, at.shading_normal, wo), at, wi, cos_i);
 
-    const glm::vec3 span = camera.eye() - at.ray_origin;
+    const glm::vec3 span = lens - at.ray_origin;
     const float tmax = glm::length(span);
-    // film_point keeps x and y inside the image, so their floors are pixel coordinates.
-    const uint32_t pixel = uint32_t(film->y) * uint32_t(scene_.settings.width) + uint32_t(film->x);
+    const uint32_t width = uint32_t(scene_.settings.width);
+    uint32_t pixel;
+    float filter_weight = 1.0f;
+    if (filter.is_unit_box()) {
+        // film_point keeps x and y inside the image, so their floors are pixel coordinates.
+        pixel = uint32_t(film->y) * width + uint32_t(film->x);
+    } else {
+        // A wider filter: the pixel by its weight among the pixels whose samples reach this point.
+        const UniformPair u = random.pair(light_dim::splat_pixel_x);
+        const PixelFilter::AxisChoice x = filter.choose_pixel(film->x, u.first), y = filter.choose_pixel(film->y, u.second);
+        if (x.pixel < 0 || x.pixel >= int(width) || y.pixel < 0 || y.pixel >= scene_.settings.height) return std::nullopt;
+        pixel = uint32_t(y.pixel) * width + uint32_t(x.pixel);
+        filter_weight = x.weight * y.weight;
+    }
+    const float scale = cos_o / dist2 * film->importance * inverse_path_count_;
     return CameraConnection{{at.ray_origin, span / tmax}, tmax,
-                            {pixel, power * f * (cos_o / dist2 * film->importance * inverse_path_count_)}};
+                            {pixel, power * f * (filter.is_unit_box() ? scale : scale * filter_weight)}};
 }
 
 // A photon for the camera paths that see this surface through a mirror or glass

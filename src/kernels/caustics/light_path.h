@@ -15,6 +15,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/sampling/rng.h"
 #include "core/scene.h"
 #include "kernels/accel/bvh_view.h"
 #include "kernels/photons/photon.h"
@@ -95,8 +96,10 @@ public:
                std::vector<LightPathVertexRecord>* record = nullptr, std::vector<Photon>* photons = nullptr) const;
 
 private:
+    // `random`: the vertex's numbers, for the point on a thin lens and the pixel under a wide filter.
     std::optional<CameraConnection> connect_to_camera(const SurfacePoint& surface, const Material& m,
-                                                      const glm::vec3& arriving, const glm::vec3& power) const;
+                                                      const glm::vec3& arriving, const glm::vec3& power,
+                                                      const VertexRandom& random) const;
     std::optional<Photon> photon_at(const SurfacePoint& surface, const Material& m, uint32_t vertex,
                                     const glm::vec3& arriving, const glm::vec3& power) const;
     Hit closest(const Ray& ray) const;
