@@ -64,7 +64,7 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
                     "Caustics (diffuse, mirror or glass, light): path (the camera path finds them by chance), "
                     "light_tracing (light paths through the mirrors and glass, connected to the camera, for caustics "
                     "seen directly) or photons (light_tracing, and the same paths as photons for caustics seen through "
-                    "a mirror or glass)")
+                    "a mirror or glass; the default where a scene has a light and a mirror or glass surface)")
         ->check(CLI::IsMember({"path", "light_tracing", "photons"}));
     cmd->add_option("--light-paths-per-pixel", o.light_paths_per_pixel,
                     "With light tracing: light paths per sample, per pixel of the image (default 1)")
