@@ -137,7 +137,9 @@ TEST(Watertight, NoRayEscapesAClosedMeshOnAnyIsa) {
         const Escapes mt = count_escapes(moller, rays, Isa::scalar);
         EXPECT_GT(mt.escaped, 0u) << c.name << ": no ray escapes even Moller-Trumbore; are the rays still aimed at edges?";
         for (Isa isa : {Isa::sse4, Isa::avx2, Isa::avx512})
-            if (cpu_supports(isa)) EXPECT_EQ(count_escapes(moller, rays, isa).escaped, mt.escaped) << c.name << " " << isa_name(isa);
+            if (cpu_supports(isa)) {
+                EXPECT_EQ(count_escapes(moller, rays, isa).escaped, mt.escaped) << c.name << " " << isa_name(isa);
+            }
         std::printf("%-14s %zu triangles: Moller-Trumbore lets %zu of %zu vertex/edge rays escape (%.3f%%); watertight 0\n",
                     c.name, c.mesh.triangles.size(), mt.escaped, mt.total, 100.0 * double(mt.escaped) / double(mt.total));
     }
@@ -187,8 +189,9 @@ TEST(Watertight, NoSpawnedRayHitsTheFaceItLeavesOnAnyIsa) {
                 return n;
             };
             EXPECT_EQ(self_hits(spawned), 0u) << name_of(test) << " " << isa_name(isa) << ": spawned rays that hit their own face";
-            if (test == TriangleTest::watertight)
+            if (test == TriangleTest::watertight) {
                 EXPECT_GT(self_hits(unmoved), 0u) << isa_name(isa) << ": rays started on their faces never hit them; the test proves nothing";
+            }
         }
     }
 }
