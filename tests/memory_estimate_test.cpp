@@ -7,6 +7,7 @@
 
 #include "kernels/caustics/light_tracing_pass.h"
 #include "kernels/memory_estimate.h"
+#include "kernels/photons/photon_memory.h"
 #include "kernels/wavefront/tiles.h"
 #include "kernels/wavefront/wavefront_renderer.h"
 #include "render_helpers.h"
@@ -93,6 +94,61 @@ TEST(MemoryEstimate, TheBvhIsCountedOnlyWhenOneIsBuilt) {
     const wt::Bvh bvh = wt::build_bvh(scene);
     // The estimate covers the built tree and the build's temporaries on top.
     EXPECT_GT(estimate, double(bvh.stats().node_bytes + bvh.stats().primitive_bytes));
+}
+
+// Photons counted against what the estimate expects per light path (photon_memory.h, an
+// expectation from area averages, not a bound): it may err up to 2.5x on the safe side and a
+// quarter below (bench/README.md has the counts of our scenes).
+void expect_photon_count_near_estimate(const std::string& file) {
+    wt::SceneDescription d = wt::load_scene_file(wt::test::scene_path(file));
+    d.settings.width = d.settings.height = 64;
+    d.settings.spp = 4;
+    d.settings.estimator.caustics = wt::CausticPaths::photons;
+    const wt::Scene scene = wt::build_scene(d);
+    ASSERT_TRUE(scene.merges_photons) << file;
+    wt::RenderOptions options;
+    options.threads = 2;
+    wt::Film film = wt::test::film_for(scene);
+    const wt::RenderResult r = wt::render(scene, options, film);
+    ASSERT_EQ(r.counts.light_paths, 4u * 64u * 64u) << file;
+    const double counted = double(r.counts.photons) / double(r.counts.light_paths);
+    const double expected = wt::expected_photons_per_light_path(scene);
+    EXPECT_GT(counted, 0.1) << file;
+    EXPECT_LE(counted, 1.25 * expected) << file << ": " << counted << " photons per light path, " << expected << " expected";
+    EXPECT_GE(counted, expected / 2.5) << file << ": " << counted << " photons per light path, " << expected << " expected";
+}
+
+TEST(MemoryEstimate, PhotonsPerLightPathAreNearWhatTheEstimateExpects) {
+    expect_photon_count_near_estimate("hexroom.json");
+    expect_photon_count_near_estimate("caustic_mirror.json");
+}
+
+TEST(MemoryEstimate, PhotonMapsAreCountedOnlyWithPhotonsAndHoldWholeSamples) {
+    wt::SceneDescription d = wt::test::hexroom(800, 800, 1);
+    d.settings.estimator.caustics = wt::CausticPaths::photons;
+    const wt::Scene photons = wt::build_scene(d);
+    d.settings.estimator.caustics = wt::CausticPaths::light_tracing;
+    const wt::Scene light_tracing = wt::build_scene(d);
+    wt::RenderOptions options;
+    EXPECT_EQ(wt::estimate_render_memory(light_tracing, options).photons, 0.0);
+    const wt::MemoryEstimate e = wt::estimate_render_memory(photons, options);
+    // 640,000 light paths per sample, more than the default batch of 2^18: one sample a batch.
+    EXPECT_EQ(wt::photon_batch_light_paths(options.photon_batch_paths, 640000), 640000u);
+    EXPECT_DOUBLE_EQ(e.photons, 640000.0 * wt::expected_photons_per_light_path(photons) * wt::photon_peak_bytes());
+    EXPECT_EQ(e.to_allocate(), e.film + e.queues() + e.bvh + e.photons);
+    // Smaller samples are gathered into a batch of up to 2^18 paths: 6 of 40,000.
+    EXPECT_EQ(wt::photon_batch_light_paths(uint64_t(1) << 18, 40000), 240000u);
+    EXPECT_EQ(wt::photon_batch_light_paths(1, 40000), 40000u);
+    // More light paths per pixel than memory holds: refused, naming them.
+    wt::Scene dense = photons;
+    dense.settings.width = dense.settings.height = 4000;
+    dense.settings.estimator.light_paths_per_pixel = 64.0f;  // the most a scene may ask for
+    const wt::MemoryEstimate big = wt::estimate_render_memory(dense, options);
+    EXPECT_GT(big.photons, 50e9);
+    const std::string problem = wt::memory_problem(big, 24e9);
+    EXPECT_NE(problem.find("photon maps"), std::string::npos) << problem;
+    EXPECT_NE(problem.find("lower --light-paths-per-pixel"), std::string::npos) << problem;
+    EXPECT_EQ(wt::memory_problem(e, 24e9), "");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "kernels/adaptive/adaptive_summary.h"
 #include "kernels/isa/intersect_dispatch.h"
+#include "kernels/photons/photon_memory.h"
 
 namespace wt {
 
@@ -61,6 +62,9 @@ void print_render_summary(std::ostream& out, const RenderSummary& m) {
             << settings.estimator.light_paths_per_pixel << " per pixel and sample), " << double(c.light_rays) / paths
             << " rays and " << double(c.camera_connections) / paths << " camera connections each, "
             << c.dropped_splats << " NaN/Inf splats\n";
+        if (m.scene->merges_photons)
+            out << "  photons          " << with_si_prefix(double(c.photons)) << " (" << double(c.photons) / paths
+                << " per light path; the memory estimate expected " << expected_photons_per_light_path(*m.scene) << ")\n";
     }
     if (m.adaptive && !m.adaptive->empty()) {
         const AdaptiveSummary a = summarize_adaptive(*m.adaptive);

@@ -10,6 +10,7 @@
 #include "kernels/accel/bvh_view.h"
 #include "kernels/accel/sah_builder.h"
 #include "kernels/caustics/light_tracing_pass.h"
+#include "kernels/photons/photon_memory.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/wavefront/ray_queues.h"
 #include "kernels/wavefront/wavefront_renderer.h"
@@ -66,6 +67,7 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
     const int lanes = intersect_kernels(options.isa.value_or(best_supported_isa()), s.accuracy).width;
     if (resolve_accel(options.accel, scene.primitive_count(), lanes) == Accel::bvh) e.bvh = bvh_bytes(scene, options);
     e.geometry = geometry_bytes(scene);
+    if (scene.merges_photons) e.photons = photon_batch_bytes(scene, options.photon_batch_paths);
     return e;
 }
 
@@ -95,9 +97,12 @@ std::string memory_problem(const MemoryEstimate& e, double available) {
     msg << "the render needs about " << format_bytes(e.total()) << " (film " << format_bytes(e.film) << ", "
         << e.workers << " worker" << (e.workers > 1 ? "s" : "") << " x " << format_bytes(e.queues_per_worker)
         << " of wavefront queues, BVH " << format_bytes(e.bvh) << ", geometry " << format_bytes(e.geometry)
+        << (e.photons > 0.0 ? ", photon maps " + format_bytes(e.photons) : std::string())
         << "), more than the " << format_bytes(available) << " of memory available; ";
     // Name what dominates.
-    if (e.queues() >= e.film && e.queues() >= e.bvh)
+    if (e.photons >= e.queues() && e.photons >= e.film && e.photons >= e.bvh)
+        msg << "lower --light-paths-per-pixel (a batch holds at least one sample's photons) or use --caustics light_tracing";
+    else if (e.queues() >= e.film && e.queues() >= e.bvh)
         msg << "lower --shadow-rays, --tile-size or --batch-paths, or use fewer --threads";
     else if (e.film >= e.bvh)
         msg << "lower --width and --height";

@@ -23,10 +23,11 @@ struct MemoryEstimate {
     int workers = 1;
     double bvh = 0.0;               // nodes, leaf blocks and the build's temporaries at their peak
     double geometry = 0.0;          // the scene's primitive arrays (already allocated when this is asked)
+    double photons = 0.0;           // one batch of photon maps at its peak (kernels/photons/photon_memory.h), expected
 
     double queues() const { return queues_per_worker * double(workers); }
     // What the render has yet to allocate.
-    double to_allocate() const { return film + queues() + bvh; }
+    double to_allocate() const { return film + queues() + bvh + photons; }
     double total() const { return to_allocate() + geometry; }
 };
 

@@ -139,7 +139,7 @@ void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, 
             was_blocked = blocked(v.connection->ray, v.connection->tmax);
             if (!was_blocked) splats.push_back(v.connection->splat);
         }
-        if (photons && v.photon) photons->push_back(*v.photon);
+        if (photons && v.photon) photons->push_back(*v.photon), ++counts.photons;
         if (record) {
             const SurfacePoint s = surface_at(scene_, ray->ray, hit);
             record->push_back({vertex, hit, s.material, s.position, ray->power * ray->weight,

@@ -94,6 +94,7 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, uin
         std::swap(ws.rays, ws.next_rays);
     }
     if (!photons) return;
+    counts.photons += ws.photons.size();
     // Collected vertex by vertex; a stable sort by path makes them path by path, each path's in
     // vertex order: what trace() gives.
     std::stable_sort(ws.photons.begin(), ws.photons.end(),
