@@ -17,6 +17,7 @@
 #include <tiny_gltf.h>
 
 #include "core/import/gltf_accessor.h"
+#include "core/import/gltf_lights.h"
 #include "core/import/gltf_materials.h"
 #include "core/import/gltf_version.h"
 #include "core/import/mapped_file.h"
@@ -97,6 +98,7 @@ private:
             for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
                 read_primitive(mesh.primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p), world);
         }
+        if (const int light = gltf_node_light(node); light != -1) read_gltf_light(path_, model_, light, world, mesh_);
         for (int child : node.children) visit(child, world, depth + 1);
     }
 
