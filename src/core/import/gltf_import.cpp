@@ -1,7 +1,8 @@
 // glTF 2.0 (.gltf with its .bin files, or .glb), parsed by tinygltf (see README.md,
 // Dependencies). Every mesh primitive of mode TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN
 // reachable from the scene's nodes becomes one piece placed by its node's world transform;
-// points and lines are skipped with a note. The accessors are read and bounds-checked by
+// points and lines are skipped with a note; KHR_lights_punctual lights are placed the same way
+// (gltf_lights.h). The accessors are read and bounds-checked by
 // gltf_accessor.h, since a buffer too short for them would otherwise be read past its end.
 
 #include <cctype>
