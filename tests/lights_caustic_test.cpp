@@ -32,15 +32,7 @@ const double kSunCos = 0.5 / std::sqrt(1.25);
 enum class Kind { point, spot, directional };
 const char* name(Kind k) { return k == Kind::point ? "point" : k == Kind::spot ? "spot" : "directional"; }
 
-// The spot's smoothstep, from the README's definition.
-double spot_falloff(double cos_angle) {
-    const double outer = std::cos(0.5 * kConeDegrees * kPiD / 180.0);
-    const double inner = std::cos(0.5 * kConeDegrees * (1.0 - kBlend) * kPiD / 180.0);
-    if (cos_angle >= inner) return 1.0;
-    if (cos_angle <= outer) return 0.0;
-    const double t = (cos_angle - outer) / (inner - outer);
-    return t * t * (3.0 - 2.0 * t);
-}
+double spot_falloff(double cos_angle) { return test::spot_falloff(cos_angle, kConeDegrees, kBlend); }
 
 // The mirror caustic's floor and ceiling mirror (no area light), lit by one listed light at
 // z = 1 (the spot pointing up), its image in the mirror at z = 3.

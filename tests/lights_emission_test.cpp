@@ -31,16 +31,6 @@ struct Uniforms {
     }
 };
 
-// The smoothstep of a spot, written from the README's definition (not PunctualLight's).
-double spot_falloff(double cos_angle, double cone_degrees, double blend) {
-    const double outer = std::cos(0.5 * cone_degrees * kPiD / 180.0);
-    const double inner = std::cos(0.5 * cone_degrees * (1.0 - blend) * kPiD / 180.0);
-    if (cos_angle >= inner) return 1.0;
-    if (cos_angle <= outer) return 0.0;
-    const double t = (cos_angle - outer) / (inner - outer);
-    return t * t * (3.0 - 2.0 * t);
-}
-
 // The mean of the rays' power (green channel) with its standard error, over n rays.
 template <typename Light>
 void expect_mean_power(const Light& light, double expected, int n, const char* what) {
@@ -67,7 +57,7 @@ TEST(LightEmission, MeanPowerIsEachLightsPower) {
     const double cone = 100.0, blend = 0.4;
     double integral = 0.0;
     const int steps = 200000;
-    for (int k = 0; k < steps; ++k) integral += spot_falloff(-1.0 + 2.0 * (k + 0.5) / steps, cone, blend) * 2.0 / steps;
+    for (int k = 0; k < steps; ++k) integral += test::spot_falloff(-1.0 + 2.0 * (k + 0.5) / steps, cone, blend) * 2.0 / steps;
     expect_mean_power(make_punctual_light(test::spot_light({0, 0, 1}, {0.2f, 0.3f, -1.0f}, glm::vec3(1, I, 1), float(cone),
                                                            float(blend))),
                       2.0 * kPiD * I * integral, n, "spot");
