@@ -182,10 +182,15 @@ TEST(ListedLights, SameBitsForEveryIntegratorScheduleAndThreadCount) {
         }
 }
 
-// Light paths start at the area light alone, and the camera paths keep what the other lights
-// give through mirrors and glass: light tracing and plain path tracing estimate the same image.
+// Light paths start at every light, and the camera paths leave them what they take over
+// (escaped rays after a specular bounce included): light tracing and plain path tracing
+// estimate the same image where both can find every path, i.e. without the delta lights, whose
+// caustics only light paths find (lights_caustic_test.cpp): the area light, the map and the sun
+// with an angle.
 TEST(ListedLights, LightTracingAgreesWithPathTracing) {
     SceneDescription d = everything_scene(LightSampling::mis, CausticPaths::path);
+    d.lights = {d.lights[0], d.lights[3]};
+    ASSERT_EQ(d.lights[1].type, LightType::directional);
     d.settings.spp = 64;
     const Film path = test::render_film(d, Integrator::wavefront).film;
     d.settings.estimator.caustics = CausticPaths::light_tracing;

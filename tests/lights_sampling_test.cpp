@@ -104,7 +104,7 @@ TEST(LightSelection, ProbabilitiesFollowPowerAndSumToOne) {
     // A point light of 4 pi I = 4 pi, a directional light of E pi r^2 = 2 pi (r = 1), area lights of 6 pi.
     const std::vector<LightDescription> lights = {test::point_light({0, 0, 1}, glm::vec3(1.0f)),
                                                   test::directional_light({0, 0, -1}, glm::vec3(2.0f), 0.0f)};
-    const SceneLights s(lights, 6.0 * kPiD, 1.0f);
+    const SceneLights s(lights, 6.0 * kPiD, BoundingSphere{glm::vec3(0.0f), 1.0f});
     EXPECT_NEAR(s.area_probability(), 0.5f, 1e-6f);
     EXPECT_NEAR(s.punctual_probability(0), 1.0f / 3.0f, 1e-6f);
     EXPECT_NEAR(s.punctual_probability(1), 1.0f / 6.0f, 1e-6f);
@@ -120,7 +120,7 @@ TEST(LightSelection, AFaintLightKeepsASampleShare) {
     // Without the floor this point light's share would round to zero in float, and with nee
     // nothing would count its light.
     const std::vector<LightDescription> lights = {test::point_light({0, 0, 1}, glm::vec3(1e-12f))};
-    const SceneLights s(lights, 1e6, 1.0f);
+    const SceneLights s(lights, 1e6, BoundingSphere{glm::vec3(0.0f), 1.0f});
     EXPECT_GT(s.punctual_probability(0), 1e-4f);
 }
 

@@ -69,6 +69,19 @@ inline LightDescription directional_light(glm::vec3 direction, glm::vec3 irradia
     return l;
 }
 
+// A spot's smoothstep towards a direction at cos_angle from its axis, written from the README's
+// definition (not PunctualLight's): full inside the cone of cone_degrees x (1 - blend), nothing
+// outside cone_degrees.
+inline double spot_falloff(double cos_angle, double cone_degrees, double blend) {
+    const double pi = 3.14159265358979323846;
+    const double outer = std::cos(0.5 * cone_degrees * pi / 180.0);
+    const double inner = std::cos(0.5 * cone_degrees * (1.0 - blend) * pi / 180.0);
+    if (cos_angle >= inner) return 1.0;
+    if (cos_angle <= outer) return 0.0;
+    const double t = (cos_angle - outer) / (inner - outer);
+    return t * t * (3.0 - 2.0 * t);
+}
+
 // A square Lambertian plane of albedo rho at z = 0, side `side`, facing +z, seen straight down
 // from `eye_height` with a narrow field of view.
 inline SceneDescription lit_plane(float rho, float side, float eye_height, float fov_degrees, int spp) {

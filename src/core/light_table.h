@@ -34,8 +34,8 @@ public:
     std::size_t size() const { return emitters_.size(); }
     float total_area() const { return total_area_; }
     float pdf_area() const { return pdf_area_; }  // of every light point sample() returns
-    // 1 / total_area: the pdf of a light point when the area lights are the only lights (light
-    // paths start at them alone), whatever the selection below.
+    // 1 / total_area: the pdf of a light point when the area lights are the only lights (where
+    // light paths start without a "lights" list), whatever the selection below.
     float pdf_area_alone() const { return pdf_area_alone_; }
     // With other lights (core/lights/scene_lights.h) the area lights are picked with probability
     // p, and the pdfs this table returns include it: pdf_area() becomes p / total_area.

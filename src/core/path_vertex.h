@@ -261,8 +261,8 @@ struct PathContinuation {
     bool specular_light_elsewhere;
     float bsdf_pdf;  // mis, or a rough bounce: the direction's pdf if light samples competed for it, else 0 (emission_added)
     // A scene with a "lights" list only (core/lights/listed_light_sampler.h): the next ray, if it
-    // leaves the scene, counts what it sees there. As count_emission, but whatever
-    // specular_light_elsewhere says: light paths start at no environment.
+    // leaves the scene, counts what it sees there (the environment, a directional light with an
+    // angle). The same rule as count_emission: light paths start at those lights too.
     bool count_environment = false;
 };
 
@@ -315,8 +315,8 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
                                                                  (bounce == 0 ? scene.light_traces_caustics : scene.merges_photons));
     // A rough lobe is always weighted against its light samples, nee or mis: light samples alone
     // cannot find a sharp lobe's light, nor BSDF samples alone a small light (GlossyLightSampler).
-    next.count_environment = E::mis || s.specular || glossy;
-    next.count_emission = next.count_environment && !(next.specular_light_elsewhere && s.specular);
+    next.count_emission = (E::mis || s.specular || glossy) && !(next.specular_light_elsewhere && s.specular);
+    next.count_environment = next.count_emission;
     next.bsdf_pdf = 0.0f;
     if constexpr (E::mis) {
         if (!s.specular) next.bsdf_pdf = glossy ? s.pdf : diffuse_direction_pdf(surface, d, s.direction);

@@ -20,18 +20,20 @@ bool light_traces_caustics(const SceneDescription& d) {
                            [&](const TriangleMesh& m) { return !m.triangles.empty() && used(m.material); }) ||
                std::any_of(d.spheres.begin(), d.spheres.end(), [&](const Sphere& s) { return used(s.material); });
     };
-    // Lights are triangles only: an emissive sphere is not sampled as a light.
+    // Area lights are triangles only: an emissive sphere is not sampled as a light. Light paths
+    // start at the "lights" list's lights too.
     const bool has_triangle_light = std::any_of(d.meshes.begin(), d.meshes.end(), [&](const TriangleMesh& m) {
         return !m.triangles.empty() && d.materials[m.material].is_emissive();
     });
-    return has_triangle_light && has(&Material::is_specular);
+    return (has_triangle_light || !d.lights.empty()) && has(&Material::is_specular);
 }
 
 namespace {
 
-// The radius of a sphere about the bounding box's centre that holds every primitive: what the
-// lights at infinity's power is measured on (core/lights/scene_lights.h). 1 for an empty scene.
-float bounding_radius(const Scene& scene) {
+// A sphere about the bounding box's centre that holds every primitive: what the lights at
+// infinity's power is measured on and their light paths start from (core/lights/scene_lights.h).
+// Radius 1 for an empty scene.
+BoundingSphere bounding_sphere(const Scene& scene) {
     glm::vec3 lo(INFINITY), hi(-INFINITY);
     for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
         const glm::vec3 v0 = scene.triangles.vertex0(i);
@@ -43,8 +45,9 @@ float bounding_radius(const Scene& scene) {
         const glm::vec3 c = scene.spheres.center(i);
         lo = glm::min(lo, c - scene.spheres.radius[i]), hi = glm::max(hi, c + scene.spheres.radius[i]);
     }
+    if (!(lo.x <= hi.x)) return {glm::vec3(0.0f), 1.0f};  // nothing in the scene
     const float r = 0.5f * glm::length(hi - lo);
-    return r > 0.0f && std::isfinite(r) ? r : 1.0f;
+    return {0.5f * (lo + hi), r > 0.0f && std::isfinite(r) ? r : 1.0f};
 }
 
 }  // namespace
@@ -90,11 +93,12 @@ Scene build_scene(const SceneDescription& description) {
     scene.lights = LightTable(scene.triangles, scene.materials);
     if (!description.lights.empty()) {
         scene.listed_lights = SceneLights(description.lights, scene.lights.empty() ? 0.0 : area_light_power(scene.triangles, scene.materials),
-                                          bounding_radius(scene));
+                                          bounding_sphere(scene));
         if (!scene.lights.empty()) scene.lights.set_selection_probability(scene.listed_lights.area_probability());
     }
-    // The loader refuses degenerate lights, so a description with an emitter has a light table.
-    scene.light_traces_caustics = light_traces_caustics(description) && !scene.lights.empty();
+    // The loader refuses degenerate lights, so a description with an emitter has a light table,
+    // and one with a "lights" list the list.
+    scene.light_traces_caustics = light_traces_caustics(description) && (!scene.lights.empty() || !scene.listed_lights.empty());
     // Photons land only on diffuse surfaces that reflect something: without one there is nothing to gather.
     scene.merges_photons = scene.light_traces_caustics && description.settings.estimator.caustics == CausticPaths::photons &&
                            std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) {

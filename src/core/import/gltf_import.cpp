@@ -1,7 +1,8 @@
 // glTF 2.0 (.gltf with its .bin files, or .glb), parsed by tinygltf (see README.md,
 // Dependencies). Every mesh primitive of mode TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN
 // reachable from the scene's nodes becomes one piece placed by its node's world transform;
-// points and lines are skipped with a note. The accessors are read and bounds-checked by
+// points and lines are skipped with a note; KHR_lights_punctual lights are placed the same way
+// (gltf_lights.h). The accessors are read and bounds-checked by
 // gltf_accessor.h, since a buffer too short for them would otherwise be read past its end.
 
 #include <cctype>
@@ -17,6 +18,7 @@
 #include <tiny_gltf.h>
 
 #include "core/import/gltf_accessor.h"
+#include "core/import/gltf_lights.h"
 #include "core/import/gltf_materials.h"
 #include "core/import/gltf_version.h"
 #include "core/import/mapped_file.h"
@@ -97,6 +99,7 @@ private:
             for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
                 read_primitive(mesh.primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p), world);
         }
+        if (const int light = gltf_node_light(node); light != -1) read_gltf_light(path_, model_, light, world, mesh_);
         for (int child : node.children) visit(child, world, depth + 1);
     }
 

@@ -46,6 +46,9 @@ struct ImportedMesh {
     std::vector<ImportedMaterial> materials;
     std::vector<MeshPiece> pieces;   // cover `positions` in order
     std::vector<std::string> notes;  // what was skipped, for the user (one line each)
+    // Lights the file places (glTF's KHR_lights_punctual), in its coordinates with the pieces'
+    // transforms applied, as the scene's "lights" list holds them.
+    std::vector<LightDescription> lights;
 
     static constexpr uint32_t kNoMaterial = UINT32_MAX;
 };

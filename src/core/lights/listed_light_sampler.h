@@ -14,10 +14,11 @@
 //   bounce it counts with mis, weighted by the power heuristic against the light samples; with
 //   nee not at all, the light samples having covered it. After a rough bounce it is weighted,
 //   nee or mis, as the rough vertex's light samples are (GlossyLightSampler).
-// - With light tracing, light paths start at the area lights alone (kernels/caustics), so the
-//   paths the camera paths leave to them (PathContinuation::specular_light_elsewhere) end at an
-//   area light: an escaped ray is the camera paths' whatever that flag says
-//   (PathContinuation::count_environment), and nothing of these lights is lost or counted twice.
+// - With light tracing, light paths start at every light (kernels/caustics, picked by power as
+//   here), so the paths the camera paths leave to them (PathContinuation::specular_light_elsewhere)
+//   are left whichever light they end at: an escaped ray after such a specular bounce is the
+//   light paths' (PathContinuation::count_environment), and the delta lights, which no camera
+//   path reaches through a mirror or glass, have their caustics from the light paths alone.
 
 #include <cmath>
 

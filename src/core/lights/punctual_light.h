@@ -46,11 +46,7 @@ struct PunctualLight {
     float cone_pdf() const { return 1.0f / (2.0f * kPi * one_minus_cos_cone); }
     // A direction towards the light, uniform in its cone.
     glm::vec3 sample_cone(float u0, float u1) const {
-        const float one_minus_cos = u0 * one_minus_cos_cone;
-        const float cos_theta = 1.0f - one_minus_cos;
-        const float sin_theta = std::sqrt(fmax_float(0.0f, one_minus_cos * (2.0f - one_minus_cos)));
-        const float phi = 2.0f * kPi * u1;
-        return Frame(-axis).to_world({sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta});
+        return Frame(-axis).to_world(sample_uniform_cone(u0, u1, one_minus_cos_cone));
     }
 };
 

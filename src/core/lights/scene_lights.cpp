@@ -40,8 +40,9 @@ PunctualLight make_punctual_light(const LightDescription& d) {
     return p;
 }
 
-SceneLights::SceneLights(const std::vector<LightDescription>& lights, double area_power, float radius) {
-    const double disk = kPiDouble * double(radius) * double(radius);
+SceneLights::SceneLights(const std::vector<LightDescription>& lights, double area_power, const BoundingSphere& bounds)
+    : bounds_(bounds) {
+    const double disk = kPiDouble * double(bounds.radius) * double(bounds.radius);
     std::vector<double> power;
     if (area_power > 0.0) {
         entries_.push_back(-1);

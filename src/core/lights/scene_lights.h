@@ -18,6 +18,7 @@
 
 #include "core/geometry_soa.h"
 #include "core/lights/environment_light.h"
+#include "core/lights/light_emission.h"
 #include "core/lights/piecewise_constant.h"
 #include "core/lights/punctual_light.h"
 #include "core/scene_description.h"
@@ -27,8 +28,8 @@ namespace wt {
 class SceneLights {
 public:
     SceneLights() = default;
-    // `area_power`: the area lights' total (0 without any); `radius`: the scene's bounding sphere's.
-    SceneLights(const std::vector<LightDescription>& lights, double area_power, float radius);
+    // `area_power`: the area lights' total (0 without any); `bounds`: a sphere that holds the scene.
+    SceneLights(const std::vector<LightDescription>& lights, double area_power, const BoundingSphere& bounds);
 
     bool empty() const { return entries_.empty(); }
     // What the selection gives the area lights (LightTable::set_selection_probability), or 0.
@@ -42,7 +43,14 @@ public:
 
     // Which light u picks: -1 the area lights, -2 the environment, else a punctual light's index.
     // `rescaled` is u within the pick, uniform in [0, 1), for the area lights' own choice.
+    // Light paths start at the light it picks too (kernels/caustics/light_path.cpp).
     int pick(float u, float& rescaled) const;
+    // The probability pick() gives `which` (as it returns it).
+    float probability(int which) const {
+        return which == -1 ? area_probability_ : which == -2 ? environment_probability_ : punctual_probability(std::size_t(which));
+    }
+    // The sphere the lights at infinity shine on and their power is measured on.
+    const BoundingSphere& bounds() const { return bounds_; }
 
 private:
     std::vector<int> entries_;  // per selection entry, as pick() returns
@@ -53,6 +61,7 @@ private:
     float environment_probability_ = 0.0f;
     std::vector<PunctualLight> punctual_;
     bool seen_by_escaping_rays_ = false;
+    BoundingSphere bounds_;
 };
 
 // Sum over the emissive triangles of pi * area * luminance(emission): the area lights' power.

@@ -58,6 +58,17 @@ inline glm::vec3 sample_cosine_hemisphere(float u0, float u1) {
 
 inline float cosine_hemisphere_pdf(float cos_theta) { return cos_theta > 0.0f ? cos_theta * kInvPi : 0.0f; }
 
+// Uniform unit vector within angle theta_max of +z (local frame), given 1 - cos(theta_max) (2:
+// the whole sphere); pdf 1 / (2 pi (1 - cos theta_max)). 1 - cos rather than cos: exact for
+// the narrow cone of a sun.
+inline glm::vec3 sample_uniform_cone(float u0, float u1, float one_minus_cos_max) {
+    const float one_minus_cos = u0 * one_minus_cos_max;
+    const float cos_theta = 1.0f - one_minus_cos;
+    const float sin_theta = std::sqrt(fmax_float(0.0f, one_minus_cos * (2.0f - one_minus_cos)));
+    const float phi = 2.0f * kPi * u1;
+    return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+}
+
 // Uniform point on a triangle as barycentrics (b1, b2) of v1 and v2; pdf = 1 / area.
 inline glm::vec2 sample_uniform_triangle(float u0, float u1) {
     const float su0 = std::sqrt(u0);

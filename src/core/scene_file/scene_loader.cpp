@@ -28,7 +28,11 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
     }
     scene.materials = read_materials(in, in.required(root, "materials", ""), "materials");
     read_shapes(in, in.required(root, "shapes", ""), "shapes", scene);
-    if (const Json* lights = in.optional(root, "lights")) scene.lights = read_lights(in, *lights, "lights");
+    // The list's lights first, then those the mesh files placed (read with the shapes).
+    if (const Json* lights = in.optional(root, "lights")) {
+        std::vector<LightDescription> listed = read_lights(in, *lights, "lights");
+        scene.lights.insert(scene.lights.begin(), listed.begin(), listed.end());
+    }
     return scene;
 }
 

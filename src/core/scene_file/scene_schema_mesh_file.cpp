@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <utility>
 
+#include <glm/geometric.hpp>
+
 #include "core/geometry_soa.h"
 #include "core/import/mesh_file.h"
 #include "core/import/place_mesh.h"
@@ -131,6 +133,17 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
     if (mesh.triangles.empty())
         in.fail(file_path, resolved + ": every triangle is degenerate (zero area)" +
                                (j.contains("transform") ? " after the transform" : ""));
+
+    // The file's lights (glTF's KHR_lights_punctual), through the shape's transform as its triangles.
+    for (LightDescription l : mesh.lights) {
+        l.position = glm::vec3(transform * glm::dvec4(glm::dvec3(l.position), 1.0));
+        const glm::dvec3 axis(transform * glm::dvec4(glm::dvec3(l.direction), 0.0));
+        const double length = glm::length(axis);
+        if (!(length > 0.0 && std::isfinite(length)) || !std::isfinite(l.position.x + l.position.y + l.position.z))
+            in.fail(file_path, resolved + ": the transform leaves a light of the file no position or direction");
+        l.direction = glm::vec3(axis / length);
+        scene.lights.push_back(l);
+    }
 
     const std::size_t first_new = scene.meshes.size();
     if (from_file) {

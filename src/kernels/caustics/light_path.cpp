@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/float_minmax.h"
+#include "core/lights/light_emission.h"
 #include "core/materials/bsdf.h"
 #include "core/materials/shading_normal_bsdf.h"
 #include "core/path_vertex.h"
@@ -56,7 +57,11 @@ uint64_t light_paths_per_sample(const RenderSettings& s) {
 }
 
 LightPathTracer::LightPathTracer(const Scene& scene, const BvhView* bvh, bool records_photons)
-    : scene_(scene), bvh_(bvh), records_photons_(records_photons), inverse_path_count_(float(1.0 / double(light_paths_per_sample(scene.settings)))) {}
+    : scene_(scene),
+      bvh_(bvh),
+      records_photons_(records_photons),
+      starts_at_area_lights_only_(scene.listed_lights.empty()),
+      inverse_path_count_(float(1.0 / double(light_paths_per_sample(scene.settings)))) {}
 
 Hit LightPathTracer::closest(const Ray& ray) const {
     return bvh_ ? bvh_intersect_closest(*bvh_, scene_.settings.accuracy, ray) : intersect_closest(scene_, ray);
@@ -66,22 +71,54 @@ bool LightPathTracer::blocked(const Ray& ray, float tmax) const {
     return bvh_ ? bvh_intersect_any(*bvh_, scene_.settings.accuracy, ray, tmax) : intersect_any(scene_, ray, tmax);
 }
 
+namespace {
+
+// The ray leaving area light point `light` cosine-weighted about its normal, `pdf_area` the
+// point's pdf (the light's pick included): Le cos / (pdf_area * cos / pi) is the emitted power
+// the path carries per unit of its pdf.
+[[gnu::always_inline]] inline std::optional<LightRay> area_light_ray(const LightSample& light, const UniformPair& direction,
+                                                                     float pdf_area) {
+    LightRay r;
+    r.ray.direction = glm::normalize(Frame(light.normal).to_world(sample_cosine_hemisphere(direction.first, direction.second)));
+    if (!(glm::dot(r.ray.direction, light.normal) > 0.0f)) return std::nullopt;  // lost to rounding at the horizon
+    r.ray.origin = offset_ray_origin(light.position, light.error, light.normal);
+    r.power = light.radiance * (kPi / pdf_area);
+    r.weight = glm::vec3(1.0f);
+    return r;
+}
+
+}  // namespace
+
 std::optional<LightRay> LightPathTracer::start(uint64_t key) const {
     const VertexRandom random(key, 0);
     const UniformPair point = random.pair(light_dim::point_u);
     const UniformPair direction = random.pair(light_dim::direction_u);
     const LightSample light = scene_.lights.sample(scene_.triangles, random(light_dim::emitter), point.first, point.second);
-    LightRay r;
-    r.ray.direction = glm::normalize(Frame(light.normal).to_world(sample_cosine_hemisphere(direction.first, direction.second)));
-    if (!(glm::dot(r.ray.direction, light.normal) > 0.0f)) return std::nullopt;  // lost to rounding at the horizon
-    r.ray.origin = offset_ray_origin(light.position, light.error, light.normal);
-    // Le cos / (pdf_area * cos / pi): the emitted power the path carries, per unit of its pdf.
-    // The area lights' pdf alone: light paths start at no other light (a scene's "lights" list
-    // is the camera paths' to sample, core/lights/listed_light_sampler.h), so they pick among
-    // the area lights with probability one.
-    r.power = light.radiance * (kPi / scene_.lights.pdf_area_alone());
-    r.weight = glm::vec3(1.0f);
-    return r;
+    // The area lights' pdf alone: without a "lights" list they are picked with probability one.
+    return area_light_ray(light, direction, scene_.lights.pdf_area_alone());
+}
+
+std::optional<LightRay> LightPathTracer::start_at_listed_lights(uint64_t key) const {
+    const VertexRandom random(key, 0);
+    const UniformPair point = random.pair(light_dim::point_u);
+    const UniformPair direction = random.pair(light_dim::direction_u);
+    const SceneLights& lights = scene_.listed_lights;
+    float rescaled = 0.0f;
+    const int which = lights.pick(random(light_dim::emitter), rescaled);
+    if (which == -1) {
+        // The table's pdf includes the area lights' pick (LightTable::set_selection_probability).
+        const LightSample light = scene_.lights.sample(scene_.triangles, rescaled, point.first, point.second);
+        return area_light_ray(light, direction, light.pdf_area);
+    }
+    const EmittedRay e = which == -2 ? sample_emission(*lights.environment(), lights.bounds(), direction.first,
+                                                       direction.second, point.first, point.second)
+                                     : sample_emission(lights.punctual()[std::size_t(which)], lights.bounds(),
+                                                       direction.first, direction.second, point.first, point.second);
+    const float probability = lights.probability(which);
+    if (!e.valid || !(probability > 0.0f)) return std::nullopt;
+    // No surface to move off: a point or spot light is no geometry, an infinite light's disk is
+    // outside the scene.
+    return LightRay{{e.origin, e.direction}, e.power / probability, glm::vec3(1.0f)};
 }
 
 // `vertex` counts the surfaces the path has hit, this one included: a camera path that ends in
@@ -126,7 +163,7 @@ LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const Ligh
 void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats,
                             std::vector<LightPathVertexRecord>* record, std::vector<Photon>* photons) const {
     const uint64_t key = light_path_key(scene_.settings.seed, index, sample);
-    std::optional<LightRay> ray = start(key);
+    std::optional<LightRay> ray = starts_at_area_lights_only_ ? start(key) : start_at_listed_lights(key);
     ++counts.light_paths;
     for (uint32_t vertex = 1; ray; ++vertex) {
         ++counts.light_rays;

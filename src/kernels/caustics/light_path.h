@@ -1,6 +1,7 @@
 #pragma once
 // One light path of light tracing (particle tracing; Veach 1997, sec. 10.2, the bidirectional
-// strategy with one camera vertex): a point on a light, a cosine-weighted direction, and bounces
+// strategy with one camera vertex): a ray leaving a light (an area light's point and a
+// cosine-weighted direction, or a listed light's, core/lights/light_emission.h), and bounces
 // (BSDF-sampled, Russian roulette) from surface to surface, each diffuse vertex connected to the
 // camera. Only paths whose first bounce is a mirror or glass count: together they estimate
 // exactly the paths camera -> diffuse -> anything -> specular -> light that the camera paths leave
@@ -81,8 +82,14 @@ public:
     // `records_photons`: at_vertex also returns the photons (Scene::merges_photons).
     LightPathTracer(const Scene& scene, const BvhView* bvh, bool records_photons = false);
 
-    // The first ray of the path with random-number key `key` (light_path_key), if it leaves its light.
+    // The first ray of the path with random-number key `key` (light_path_key), if it leaves its
+    // light: in a scene whose lights are the area lights alone (starts_at_area_lights_only) by
+    // start, else by start_at_listed_lights, which picks among every light by power
+    // (SceneLights::pick) and the area lights' triangle by area. Two functions, chosen once per
+    // batch of paths, so the area-light scenes run the start they always ran.
+    bool starts_at_area_lights_only() const { return starts_at_area_lights_only_; }
     std::optional<LightRay> start(uint64_t key) const;
+    std::optional<LightRay> start_at_listed_lights(uint64_t key) const;
     // What the path does at the surface `hit` of `at`, its `vertex`-th (1 for the first hit).
     LightVertex at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit) const;
 
@@ -108,6 +115,7 @@ private:
     const Scene& scene_;
     const BvhView* bvh_;
     bool records_photons_;
+    bool starts_at_area_lights_only_;
     float inverse_path_count_;
 };
 

@@ -57,14 +57,21 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, uin
                                             std::vector<Photon>* photons, RayCounts& counts) const {
     ws.rays.count = 0;
     ws.photons.clear();
-    for (uint64_t index = first; index < end; ++index) {
-        const uint32_t slot = uint32_t(index - first);
-        ws.key[slot] = light_path_key(scene_.settings.seed, index, sample);
-        if (const auto r = tracer_.start(ws.key[slot])) {
-            ws.power_r[slot] = r->power.x, ws.power_g[slot] = r->power.y, ws.power_b[slot] = r->power.z;
-            ws.rays.push(r->ray, r->weight, slot, 0);
+    // Which start the paths take, decided once for the batch (LightPathTracer::start).
+    const auto start_all = [&](auto&& start) {
+        for (uint64_t index = first; index < end; ++index) {
+            const uint32_t slot = uint32_t(index - first);
+            ws.key[slot] = light_path_key(scene_.settings.seed, index, sample);
+            if (const auto r = start(ws.key[slot])) {
+                ws.power_r[slot] = r->power.x, ws.power_g[slot] = r->power.y, ws.power_b[slot] = r->power.z;
+                ws.rays.push(r->ray, r->weight, slot, 0);
+            }
         }
-    }
+    };
+    if (tracer_.starts_at_area_lights_only())
+        start_all([&](uint64_t key) { return tracer_.start(key); });
+    else
+        start_all([&](uint64_t key) { return tracer_.start_at_listed_lights(key); });
     counts.light_paths += end - first;
     for (uint32_t vertex = 1; ws.rays.count > 0; ++vertex) {
         counts.light_rays += ws.rays.count;
