@@ -221,12 +221,15 @@ TEST(SphereExtremes, OriginsOnAndInsideSpheres) {
                     break;
             }
         }
+        // Copies: C++17 lets no lambda capture a structured binding (GCC allows it, clang refuses).
+        const glm::vec3 c = center;
+        const float r = radius;
         expect_everywhere(scene, queries, [&](std::size_t i, const Query& q, const Answer& a) -> std::string {
-            const SphereTruth s = sphere_truth(q.ray, center, radius);
+            const SphereTruth s = sphere_truth(q.ray, c, r);
             if (kinds[i] == outward) return a.found() ? "a ray leaving the sphere outward hit it again" : "";
             if (!a.found()) return "a ray starting inside the sphere missed it";
             // The far root, to within 1e-4 of the radius: never the spot the ray started from.
-            if (std::fabs(double(a.t) - s.far_t) > 1e-4 * radius)
+            if (std::fabs(double(a.t) - s.far_t) > 1e-4 * r)
                 return "wrong root: expected the far root " + std::to_string(s.far_t) + " (near " + std::to_string(s.near_t) + ")";
             return "";
         });
