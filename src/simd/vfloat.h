@@ -20,9 +20,8 @@
 //   rcp_fast(a)   <= 4 ulp from rcp(a) for normal |a| in [2^-126, 2^125)
 //   rsqrt_fast(a) <= 5 ulp from rsqrt(a) for normal positive a
 //   The bounds follow from the estimate's specified error (1.5*2^-12) squared by the Newton
-//   step, plus the roundings of the step (one more without FMA); the tests enforce them. Worst
-//   cases measured (every float of a binade, plus random) on the AVX-512 AMD EPYC this was
-//   developed on: rcp_fast 3/2/1 ulp and rsqrt_fast 3/3/2 ulp on SSE4/AVX2/AVX-512.
+//   step, plus the roundings of the step (one more without FMA); the tests enforce them
+//   (simd_test: every float of a binade, plus random), on whatever CPU runs them.
 //   Use rcp/rsqrt when bits must match across ISAs.
 //   0 -> +-inf, inf -> +-0 and NaN -> NaN exactly (the Newton step would give NaN there; the
 //   estimate is kept instead). On SSE/AVX2 the estimate treats denormal inputs as 0 (result
