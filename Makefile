@@ -92,8 +92,9 @@ test-asan: sanitizer-deps
 	cd $(ASAN_BUILD_DIR) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --output-on-failure -j $(JOBS) -LE 'long|perf'
 
-test-tsan: sanitizer-deps
-	$(SANITIZER_CC) cmake -S . -B $(TSAN_BUILD_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWAVETRACE_SANITIZE=thread -DWAVETRACE_BUILD_BENCHMARKS=OFF -DWAVETRACE_LONG_TESTS=OFF
+# TSan stays with g++ until its clang build has been run through the suite here.
+test-tsan: deps
+	cmake -S . -B $(TSAN_BUILD_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWAVETRACE_SANITIZE=thread -DWAVETRACE_BUILD_BENCHMARKS=OFF -DWAVETRACE_LONG_TESTS=OFF
 	cmake --build $(TSAN_BUILD_DIR) -j $(SANITIZER_JOBS) --target render_test extremes_test kernels_test hostile_input_test
 	cd $(TSAN_BUILD_DIR) && TSAN_OPTIONS=halt_on_error=1 ctest --output-on-failure -j $(JOBS) -R '$(TSAN_TESTS)'
 
