@@ -3,8 +3,8 @@
 #include <iostream>
 #include <memory>
 
-#include "core/film/image_error.h"
-#include "core/film/image_input.h"
+#include "core/image_io/rgb_image_input.h"
+#include "core/image_metrics/image_metrics.h"
 #include "error_report.h"
 
 namespace wt {

@@ -4,7 +4,7 @@
 #include <ostream>
 #include <string>
 
-#include "core/film/image_error.h"
+#include "core/image_metrics/image_metrics.h"
 
 namespace wt {
 

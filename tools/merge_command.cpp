@@ -2,8 +2,8 @@
 
 #include <iostream>
 
+#include "core/checkpoint/checkpoint_merge.h"
 #include "core/film/aov.h"
-#include "core/film/checkpoint_merge.h"
 #include "core/film/image_output.h"
 #include "render_checkpoint.h"
 

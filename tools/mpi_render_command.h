@@ -2,7 +2,7 @@
 // `wavetrace render` under mpirun: the command's side of tools/mpi_render.h (which options
 // apply, what rank 0 writes and prints). Built only with -DWAVETRACE_MPI=ON.
 
-#include "core/film/checkpoint.h"
+#include "core/checkpoint/checkpoint.h"
 #include "kernels/renderer.h"
 #include "render_command.h"
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "core/atomic_file.h"
-#include "core/film/image_input.h"
+#include "core/image_io/rgb_image_input.h"
 #include "error_report.h"
 
 namespace wt {

@@ -11,8 +11,8 @@
 #include <CLI/CLI.hpp>
 
 #include "core/film/film.h"
-#include "core/film/image_error.h"
-#include "core/film/rgb_image.h"
+#include "core/image_io/rgb_image.h"
+#include "core/image_metrics/image_metrics.h"
 #include "kernels/renderer.h"
 #include "render_passes.h"
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "core/film/checkpoint.h"
-#include "core/film/checkpoint_match.h"
+#include "core/checkpoint/checkpoint.h"
+#include "core/checkpoint/checkpoint_match.h"
 #include "core/film/image_output.h"
 #include "kernels/renderer.h"
 

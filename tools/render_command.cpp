@@ -9,8 +9,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/checkpoint/checkpoint.h"
 #include "core/film/aov.h"
-#include "core/film/checkpoint.h"
 #include "core/film/film.h"
 #include "core/film/image_output.h"
 #include "core/printable.h"

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "core/atomic_file.h"
-#include "core/film/image_input.h"
+#include "core/image_io/rgb_image_input.h"
 #include "core/scene_file/scene_loader.h"
 #include "tradeoff_fit.h"
 #include "tradeoff_sweep.h"

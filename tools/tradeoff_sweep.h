@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "core/film/image_error.h"
-#include "core/film/rgb_image.h"
+#include "core/image_io/rgb_image.h"
+#include "core/image_metrics/image_metrics.h"
 #include "core/scene_description.h"
 #include "kernels/renderer.h"
 #include "tradeoff_knobs.h"

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/image_io/image_error.h"
-#include "core/film/rgb_image.h"
+#include "core/image_io/rgb_image.h"
 
 namespace wt {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/film/checkpoint.h"
+#include "core/checkpoint/checkpoint.h"
 
 namespace wt {
 

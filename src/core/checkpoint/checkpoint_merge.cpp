@@ -1,9 +1,9 @@
-#include "core/film/checkpoint_merge.h"
+#include "core/checkpoint/checkpoint_merge.h"
 
 #include <algorithm>
 #include <optional>
 
-#include "core/film/checkpoint_match.h"
+#include "core/checkpoint/checkpoint_match.h"
 
 namespace wt {
 

@@ -1,4 +1,4 @@
-#include "core/film/checkpoint_settings.h"
+#include "core/checkpoint/checkpoint_settings.h"
 
 #include <cstdio>
 

@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/film/checkpoint_settings.h"
+#include "core/checkpoint/checkpoint_settings.h"
 #include "core/film/film.h"
 
 namespace wt {

@@ -14,8 +14,8 @@
 #include <xxhash.h>
 
 #include "core/atomic_file.h"
-#include "core/film/checkpoint.h"
-#include "core/film/checkpoint_format.h"
+#include "core/checkpoint/checkpoint.h"
+#include "core/checkpoint/checkpoint_format.h"
 #include "core/scene_hash.h"
 
 namespace wt {

@@ -1,4 +1,4 @@
-#include "core/film/image_input.h"
+#include "core/image_io/rgb_image_input.h"
 
 #include <cmath>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "core/film/checkpoint_match.h"
+#include "core/checkpoint/checkpoint_match.h"
 
 #include "core/scene_hash.h"
 

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/film/rgb_image.h"
+#include "core/image_io/rgb_image.h"
 
 namespace wt {
 

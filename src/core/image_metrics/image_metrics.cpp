@@ -1,4 +1,4 @@
-#include "core/film/image_error.h"
+#include "core/image_metrics/image_metrics.h"
 
 #include <array>
 #include <cmath>
