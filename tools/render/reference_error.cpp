@@ -1,4 +1,4 @@
-#include "reference_error.h"
+#include "tools/render/reference_error.h"
 
 #include <iomanip>
 #include <sstream>
@@ -6,7 +6,7 @@
 
 #include "core/atomic_file.h"
 #include "core/image_io/rgb_image_input.h"
-#include "error_report.h"
+#include "tools/cli/error_report.h"
 
 namespace wt {
 

@@ -7,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "tools/cli/subcommand.h"
+
 namespace wt {
 
 struct MergeCommandOptions {
@@ -20,5 +22,8 @@ CLI::App* add_merge_command(CLI::App& app, MergeCommandOptions& options);
 
 // Returns the exit code: 0 merged, 1 an error (printed; nothing written).
 int run_merge_command(const MergeCommandOptions& options);
+
+// Both of the above, the options owned by the returned command.
+Subcommand merge_subcommand(CLI::App& app);
 
 }  // namespace wt

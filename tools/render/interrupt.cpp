@@ -1,4 +1,4 @@
-#include "interrupt.h"
+#include "tools/render/interrupt.h"
 
 #include <signal.h>
 #include <unistd.h>

@@ -1,11 +1,12 @@
-#include "merge_command.h"
+#include "tools/merge/merge_command.h"
 
 #include <iostream>
+#include <memory>
 
 #include "core/checkpoint/checkpoint_merge.h"
 #include "core/film/aov.h"
 #include "core/film/image_output.h"
-#include "render_checkpoint.h"
+#include "tools/render/render_checkpoint.h"
 
 namespace wt {
 
@@ -67,6 +68,11 @@ int run_merge_command(const MergeCommandOptions& o) {
         std::cerr << "wavetrace: error: " << e.what() << "\n";
         return 1;
     }
+}
+
+Subcommand merge_subcommand(CLI::App& app) {
+    auto options = std::make_shared<MergeCommandOptions>();
+    return {add_merge_command(app, *options), [options] { return run_merge_command(*options); }};
 }
 
 }  // namespace wt

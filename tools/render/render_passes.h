@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "kernels/progressive_render.h"
-#include "progress_display.h"
+#include "tools/render/progress_display.h"
 
 namespace wt {
 

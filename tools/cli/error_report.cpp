@@ -1,4 +1,4 @@
-#include "error_report.h"
+#include "tools/cli/error_report.h"
 
 #include <cmath>
 #include <iomanip>

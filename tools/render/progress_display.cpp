@@ -1,4 +1,4 @@
-#include "progress_display.h"
+#include "tools/render/progress_display.h"
 
 #include <unistd.h>
 

@@ -6,7 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "subcommand.h"
+#include "tools/cli/subcommand.h"
 
 namespace wt {
 

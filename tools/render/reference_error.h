@@ -14,7 +14,7 @@
 #include "core/image_io/rgb_image.h"
 #include "core/image_metrics/image_metrics.h"
 #include "kernels/renderer.h"
-#include "render_passes.h"
+#include "tools/render/render_passes.h"
 
 namespace wt {
 

@@ -8,7 +8,8 @@
 #include <CLI/CLI.hpp>
 
 #include "kernels/renderer.h"
-#include "reference_error.h"
+#include "tools/cli/subcommand.h"
+#include "tools/render/reference_error.h"
 
 namespace wt {
 
@@ -44,5 +45,8 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& options);
 
 // Runs the command; returns the process exit code. Errors are printed, never thrown.
 int run_render_command(RenderCommandOptions& options);
+
+// Both of the above, the options owned by the returned command.
+Subcommand render_subcommand(CLI::App& app);
 
 }  // namespace wt

@@ -1,4 +1,4 @@
-#include "cli_values.h"
+#include "tools/cli/cli_values.h"
 
 #include <cerrno>
 #include <cmath>

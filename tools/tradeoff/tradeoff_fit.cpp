@@ -1,4 +1,4 @@
-#include "tradeoff_fit.h"
+#include "tools/tradeoff/tradeoff_fit.h"
 
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "tradeoff_sweep.h"
+#include "tools/tradeoff/tradeoff_sweep.h"
 
 #include <algorithm>
 

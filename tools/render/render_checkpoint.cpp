@@ -1,4 +1,4 @@
-#include "render_checkpoint.h"
+#include "tools/render/render_checkpoint.h"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "render_passes.h"
+#include "tools/render/render_passes.h"
 
 namespace wt {
 

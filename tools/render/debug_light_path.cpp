@@ -1,4 +1,4 @@
-#include "debug_light_path.h"
+#include "tools/render/debug_light_path.h"
 
 #include <iostream>
 #include <sstream>
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "kernels/caustics/light_path.h"
-#include "replay_accel.h"
+#include "tools/render/replay_accel.h"
 
 namespace wt {
 

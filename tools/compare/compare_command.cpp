@@ -1,11 +1,11 @@
-#include "compare_command.h"
+#include "tools/compare/compare_command.h"
 
 #include <iostream>
 #include <memory>
 
 #include "core/image_io/rgb_image_input.h"
 #include "core/image_metrics/image_metrics.h"
-#include "error_report.h"
+#include "tools/cli/error_report.h"
 
 namespace wt {
 

@@ -1,4 +1,4 @@
-#include "tradeoff_knobs.h"
+#include "tools/tradeoff/tradeoff_knobs.h"
 
 #include <sstream>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "tradeoff_command.h"
+#include "tools/tradeoff/tradeoff_command.h"
 
 #include <cmath>
 #include <iomanip>
@@ -10,8 +10,8 @@
 #include "core/atomic_file.h"
 #include "core/image_io/rgb_image_input.h"
 #include "core/scene_file/scene_loader.h"
-#include "tradeoff_fit.h"
-#include "tradeoff_sweep.h"
+#include "tools/tradeoff/tradeoff_fit.h"
+#include "tools/tradeoff/tradeoff_sweep.h"
 
 namespace wt {
 

@@ -1,4 +1,4 @@
-#include "debug_sample.h"
+#include "tools/render/debug_sample.h"
 
 #include <iostream>
 #include <memory>
@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "replay_accel.h"
 #include "kernels/caustics/light_path.h"
 #include "kernels/photons/photon_maps.h"
 #include "kernels/reference_integrator.h"
+#include "tools/render/replay_accel.h"
 
 namespace wt {
 

@@ -1,4 +1,4 @@
-#include "render_command.h"
+#include "tools/render/render_command.h"
 
 #include <unistd.h>
 
@@ -7,6 +7,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 #include "core/checkpoint/checkpoint.h"
@@ -17,21 +18,21 @@
 #include "core/scene.h"
 #include "core/scene_file/scene_loader.h"
 #include "core/scene_hash.h"
-#include "cli_values.h"
-#include "debug_light_path.h"
-#include "debug_sample.h"
-#include "interrupt.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/memory_estimate.h"
 #include "kernels/progressive_render.h"
-#include "progress_display.h"
-#include "render_checkpoint.h"
+#include "tools/cli/cli_values.h"
+#include "tools/render/debug_light_path.h"
+#include "tools/render/debug_sample.h"
+#include "tools/render/interrupt.h"
+#include "tools/render/progress_display.h"
+#include "tools/render/render_checkpoint.h"
 #if WAVETRACE_MPI
-#include "mpi_render.h"
-#include "mpi_render_command.h"
+#include "tools/render/mpi_render.h"
+#include "tools/render/mpi_render_command.h"
 #endif
-#include "render_passes.h"
-#include "render_summary.h"
+#include "tools/render/render_passes.h"
+#include "tools/render/render_summary.h"
 
 namespace wt {
 
@@ -304,6 +305,11 @@ int run_render_command(RenderCommandOptions& o) {
 #endif
         return 1;
     }
+}
+
+Subcommand render_subcommand(CLI::App& app) {
+    auto options = std::make_shared<RenderCommandOptions>();
+    return {add_render_command(app, *options), [options] { return run_render_command(*options); }};
 }
 
 }  // namespace wt

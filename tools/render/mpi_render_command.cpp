@@ -1,12 +1,12 @@
-#include "mpi_render_command.h"
+#include "tools/render/mpi_render_command.h"
 
 #include <iostream>
 #include <stdexcept>
 
 #include "core/scene_hash.h"
-#include "mpi_render.h"
-#include "render_checkpoint.h"
-#include "render_summary.h"
+#include "tools/render/mpi_render.h"
+#include "tools/render/render_checkpoint.h"
+#include "tools/render/render_summary.h"
 
 namespace wt {
 

@@ -1,10 +1,10 @@
 #pragma once
-// `wavetrace render` under mpirun: the command's side of tools/mpi_render.h (which options
+// `wavetrace render` under mpirun: the command's side of mpi_render.h (which options
 // apply, what rank 0 writes and prints). Built only with -DWAVETRACE_MPI=ON.
 
 #include "core/checkpoint/checkpoint.h"
 #include "kernels/renderer.h"
-#include "render_command.h"
+#include "tools/render/render_command.h"
 
 namespace wt {
 

@@ -1,4 +1,4 @@
-#include "mpi_render.h"
+#include "tools/render/mpi_render.h"
 
 #include <mpi.h>
 #include <unistd.h>

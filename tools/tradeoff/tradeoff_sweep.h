@@ -10,7 +10,7 @@
 #include "core/image_metrics/image_metrics.h"
 #include "core/scene_description.h"
 #include "kernels/renderer.h"
-#include "tradeoff_knobs.h"
+#include "tools/tradeoff/tradeoff_knobs.h"
 
 namespace wt {
 
