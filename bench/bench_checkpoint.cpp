@@ -11,7 +11,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "core/film/checkpoint.h"
+#include "core/checkpoint/checkpoint.h"
 #include "core/version.h"
 
 namespace wt {

@@ -13,8 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/checkpoint/checkpoint.h"
 #include "core/film/aov.h"
-#include "core/film/checkpoint.h"
 #include "core/scene_hash.h"
 #include "core/version.h"
 #include "kernels/adaptive/decision_schedule.h"

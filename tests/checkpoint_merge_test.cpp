@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/film/checkpoint_merge.h"
+#include "core/checkpoint/checkpoint_merge.h"
 #include "core/version.h"
 
 namespace wt {

@@ -16,9 +16,9 @@
 #include <xxhash.h>
 
 #include "core/atomic_file.h"
-#include "core/film/checkpoint.h"
-#include "core/film/checkpoint_format.h"
-#include "core/film/checkpoint_match.h"
+#include "core/checkpoint/checkpoint.h"
+#include "core/checkpoint/checkpoint_format.h"
+#include "core/checkpoint/checkpoint_match.h"
 #include "core/version.h"
 
 namespace wt {

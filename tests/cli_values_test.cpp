@@ -6,7 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
 
-#include "cli_values.h"
+#include "tools/cli/cli_values.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <gtest/gtest.h>
 
-#include "core/film/image_error.h"
+#include "core/image_metrics/image_metrics.h"
 
 namespace wt {
 namespace {

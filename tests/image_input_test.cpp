@@ -8,8 +8,8 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
-#include "core/film/image_input.h"
 #include "core/film/image_output.h"
+#include "core/image_io/rgb_image_input.h"
 
 namespace wt {
 namespace {

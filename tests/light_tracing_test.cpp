@@ -12,7 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/camera.h"
-#include "core/film/checkpoint.h"
+#include "core/checkpoint/checkpoint.h"
 #include "core/version.h"
 #include "kernels/caustics/light_path.h"
 #include "camera_importance.h"

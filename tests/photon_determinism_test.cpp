@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/film/checkpoint.h"
+#include "core/checkpoint/checkpoint.h"
 #include "core/version.h"
 #include "kernels/caustics/light_path.h"
 #include "mirror_caustic.h"

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/film/checkpoint.h"
+#include "core/checkpoint/checkpoint.h"
 #include "core/scene_file/scene_loader.h"
 #include "core/scene_hash.h"
 #include "core/version.h"

@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "tools/tradeoff_fit.h"
-#include "tools/tradeoff_knobs.h"
-#include "tools/tradeoff_sweep.h"
+#include "tools/tradeoff/tradeoff_fit.h"
+#include "tools/tradeoff/tradeoff_knobs.h"
+#include "tools/tradeoff/tradeoff_sweep.h"
 
 namespace wt {
 namespace {

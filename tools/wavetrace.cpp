@@ -1,19 +1,20 @@
-// wavetrace: the command-line front end. Subcommands live in their own files.
+// wavetrace: the command-line front end. Each subcommand lives in its own folder.
 
 #include <signal.h>
 
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
-#include "cli_values.h"
-#include "compare_command.h"
-#include "merge_command.h"
-#include "render_command.h"
-#include "tradeoff_command.h"
+#include "tools/cli/cli_values.h"
+#include "tools/compare/compare_command.h"
+#include "tools/merge/merge_command.h"
+#include "tools/render/render_command.h"
+#include "tools/tradeoff/tradeoff_command.h"
 #if WAVETRACE_MPI
-#include "mpi_render.h"
+#include "tools/render/mpi_render.h"
 #endif
 
 int main(int argc, char** argv) {
@@ -34,18 +35,14 @@ int main(int argc, char** argv) {
     CLI::App app{"wavetrace: a wavefront Monte Carlo path tracer for the CPU"};
     app.require_subcommand(1);
     app.failure_message(wt::printable_failure_message);
-    wt::RenderCommandOptions render_options;
-    CLI::App* render = wt::add_render_command(app, render_options);
-    wt::MergeCommandOptions merge_options;
-    CLI::App* merge = wt::add_merge_command(app, merge_options);
-    const std::vector<wt::Subcommand> subcommands = {wt::compare_subcommand(app), wt::tradeoff_subcommand(app)};
+    // Registered in this order, which is the order `--help` lists them in.
+    const std::vector<wt::Subcommand> subcommands = {wt::render_subcommand(app), wt::merge_subcommand(app),
+                                                     wt::compare_subcommand(app), wt::tradeoff_subcommand(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
-    if (render->parsed()) return wt::run_render_command(render_options);
-    if (merge->parsed()) return wt::run_merge_command(merge_options);
     for (const wt::Subcommand& s : subcommands)
         if (s.app->parsed()) return s.run();
     return 1;

@@ -5,7 +5,7 @@
 // (disk full, unwritable directory, a killed process) leaves the previous file as it was.
 //
 // The temporary's name is registered while it exists, so an emergency exit (a second Ctrl-C:
-// tools/interrupt.h) can remove it with async-signal-safe calls only.
+// tools/render/interrupt.h) can remove it with async-signal-safe calls only.
 
 #include <functional>
 #include <stdexcept>

@@ -9,8 +9,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cli_values.h"
-#include "render_command.h"
+#include "tools/cli/cli_values.h"
+#include "tools/render/render_command.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     std::vector<std::string> args;

@@ -3,7 +3,8 @@
 // that it is still sampled. Kept explicitly, beside the film's sums, because the film's counts
 // cannot tell it: they exclude dropped non-finite samples (fixed_point.h), so a pixel with
 // fewer samples than the render may have stopped or may have dropped a NaN. A checkpoint
-// stores it (checkpoint_format.h), so a resumed render continues with the same decisions.
+// stores it (core/checkpoint/checkpoint_format.h), so a resumed render continues with the
+// same decisions.
 //
 // Empty for a render without adaptive sampling, which then neither allocates nor reads it.
 

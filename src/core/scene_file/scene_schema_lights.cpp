@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/film/image_input.h"
+#include "core/image_io/rgb_image_input.h"
 #include "core/scene_file/scene_schema.h"
 
 // The "lights" section: the environment and the punctual lights (README, "Lights").
