@@ -1,5 +1,7 @@
 #include "core/scene.h"
 
+#include "core/instances/build_instances.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -16,9 +18,12 @@ bool light_traces_caustics(const SceneDescription& d) {
     if (d.camera.projection == Projection::orthographic) return false;
     const auto has = [&](bool (Material::*property)() const) {
         const auto used = [&](uint32_t material) { return (d.materials[material].*property)(); };
-        return std::any_of(d.meshes.begin(), d.meshes.end(),
-                           [&](const TriangleMesh& m) { return !m.triangles.empty() && used(m.material); }) ||
-               std::any_of(d.spheres.begin(), d.spheres.end(), [&](const Sphere& s) { return used(s.material); });
+        const auto in_mesh = [&](const TriangleMesh& m) { return !m.triangles.empty() && used(m.material); };
+        return std::any_of(d.meshes.begin(), d.meshes.end(), in_mesh) ||
+               std::any_of(d.spheres.begin(), d.spheres.end(), [&](const Sphere& s) { return used(s.material); }) ||
+               std::any_of(d.prototypes.begin(), d.prototypes.end(), [&](const MeshPrototype& p) {
+                   return std::any_of(p.parts.begin(), p.parts.end(), in_mesh);
+               });
     };
     // Lights are triangles only: an emissive sphere is not sampled as a light.
     const bool has_triangle_light = std::any_of(d.meshes.begin(), d.meshes.end(), [&](const TriangleMesh& m) {
@@ -85,6 +90,7 @@ Scene build_scene(const SceneDescription& description) {
     for (const Sphere& sphere : description.spheres) {
         scene.spheres.push_back(sphere.center, sphere.radius, sphere.material);
     }
+    build_instances(description, scene.primitive_count(), scene.instances);
     scene.has_rough_materials = std::any_of(scene.materials.begin(), scene.materials.end(),
                                             [](const Material& m) { return m.is_microfacet(); });
     scene.lights = LightTable(scene.triangles, scene.materials);

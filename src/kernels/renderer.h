@@ -19,6 +19,7 @@
 #include "kernels/accel/accel_choice.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/accel/bvh_view.h"
+#include "kernels/accel/scene_bvh.h"
 #include "kernels/isa/intersect_kernels.h"
 #include "kernels/render_stats.h"
 #include "kernels/wavefront/tiles.h"
@@ -110,8 +111,7 @@ private:
     std::vector<Tile> tiles_;
     ThreadPool pool_;
     const IntersectKernels* kernels_;
-    Bvh bvh_;
-    BvhView bvh_tree_;
+    SceneBvh bvh_;
     std::vector<RayCounts> counts_;
     // Created by the worker that uses it, on first use, so its pages live near that core.
     std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces_;

@@ -106,16 +106,18 @@ WT_KERNEL_INLINE void sort_far_to_near(uint32_t* refs, float* t, int count) {
     }
 }
 
-template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L>
-WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, SingleRayState<Q, L>& state) {
-    const BvhNode<W>* nodes = static_cast<const BvhNode<W>*>(bvh.nodes);
-    const SingleRay<L> ray = broadcast_ray<L>(rays, i);
-    const TriangleRays<T, L> tri_ray(ray.o, ray.d);
-    const BoxRay<V> box_ray(rays, i);
+// The generic loop: one ray's walk of one tree (`tree_nodes`, from child reference `root`),
+// nearest child first for closest hits, test_leaf(ref) at each leaf it reaches, stopping when
+// the state says so. The flat tree's leaves are primitive blocks; the instances' top level's
+// leaves are instances, each of which walks its mesh's tree with this same loop.
+template <Query Q, int W, int V, typename State, typename TestLeaf>
+WT_KERNEL_INLINE void traverse_tree(const void* tree_nodes, uint32_t root, const BoxRay<V>& box_ray, State& state,
+                                    TestLeaf&& test_leaf) {
+    const BvhNode<W>* nodes = static_cast<const BvhNode<W>*>(tree_nodes);
     uint32_t stack_ref[kBvhStackSize];
     float stack_t[kBvhStackSize];
     int top = 0;
-    uint32_t ref = bvh.root;
+    uint32_t ref = root;
     for (;;) {
         if (!(ref & kBvhLeafBit)) {
             const BvhNode<W>& node = nodes[ref];
@@ -149,7 +151,7 @@ WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_
                 continue;
             }
         } else {
-            test_leaf<T, S, Q, L>(bvh, ref, ray, tri_ray, state);
+            test_leaf(ref);
             if (state.done()) return;
         }
         // Next entry still nearer than the closest hit so far (entries were pushed with
@@ -160,6 +162,16 @@ WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_
         } while (!(stack_t[top] <= state.closest));
         ref = stack_ref[top];
     }
+}
+
+template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L>
+WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, SingleRayState<Q, L>& state) {
+    const SingleRay<L> ray = broadcast_ray<L>(rays, i);
+    const TriangleRays<T, L> tri_ray(ray.o, ray.d);
+    const BoxRay<V> box_ray(rays, i);
+    traverse_tree<Q, W, V>(bvh.nodes, bvh.root, box_ray, state, [&](uint32_t ref) __attribute__((always_inline)) {
+        test_leaf<T, S, Q, L>(bvh, ref, ray, tri_ray, state);
+    });
 }
 
 template <Query Q, TriangleTest T, SphereTest S, int W, int MaxWidth>
