@@ -146,6 +146,11 @@ RenderResult RenderSession::result() const {
     result.isa = isa_;
     result.accel = accel_;
     result.bvh = bvh_.tree.stats();
+    if (bvh_.instances) {
+        result.instance_count = bvh_.instances->instance_count();
+        result.instanced_mesh_bytes = bvh_.instances->mesh_bytes();
+        result.instance_bytes = bvh_.instances->instance_bytes() + scene_.instances.instances.size() * sizeof(Instance);
+    }
     if (photons_) result.photon_maps_built = photons_->maps_built();
     return result;
 }

@@ -50,6 +50,10 @@ struct RenderResult {
     Isa isa = Isa::scalar;  // kernels the wavefront integrator used
     Accel accel = Accel::brute;  // what `automatic` resolved to
     BvhStats bvh;                // when accel is bvh: the tree's size and build time
+    // With instances: how many, and the bytes of their meshes' trees (each once) and of the
+    // top level with the instances' records.
+    std::size_t instance_count = 0;
+    std::size_t instanced_mesh_bytes = 0, instance_bytes = 0;
     uint64_t photon_maps_built = 0;  // with photons: the samples whose photons some camera path gathered
 };
 

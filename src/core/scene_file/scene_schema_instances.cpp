@@ -1,6 +1,9 @@
 #include "core/scene_file/scene_schema_instances.h"
 
+#include <cstdio>
 #include <utility>
+
+#include "core/available_memory.h"
 
 #include "core/instances/build_instances.h"
 #include "core/instances/scene_instances.h"
@@ -94,6 +97,7 @@ std::vector<NamedMeshes::Placement> NamedMeshes::expand(const Json& j, const std
         in_.fail(transforms_path, std::to_string(transforms.size()) + " placements of " + Json(name).dump() + " (" +
                                       std::to_string(inner.triangles) + " triangles) make more than the " +
                                       std::to_string(kMaxPrimitiveIds) + " triangles a hit's 32-bit id can name");
+    check_memory(scene_.instances.size() + count, transforms_path);
     std::vector<Placement> out;
     out.reserve(count);
     for (std::size_t t = 0; t < transforms.size(); ++t)
@@ -127,6 +131,20 @@ std::vector<glm::dmat4> NamedMeshes::read_transforms(const Json& j, const std::s
     return out;
 }
 
+// What placing `count` instances costs before the renderer's own estimate can be asked (the
+// loader's placements, the description's, then the scene's), so a count that cannot fit is
+// refused before it is built.
+void NamedMeshes::check_memory(uint64_t count, const std::string& path) const {
+    const double bytes = double(count) * double(sizeof(Placement) + sizeof(InstanceDescription) + sizeof(Instance));
+    const double available = available_memory_bytes();
+    if (available > 0.0 && bytes > 0.5 * available) {
+        char text[200];
+        std::snprintf(text, sizeof text, "%llu instances need %.1f GB just to be placed, more than half the %.1f GB of memory available",
+                      (unsigned long long)count, bytes * 1e-9, available * 1e-9);
+        in_.fail(path, text);
+    }
+}
+
 void NamedMeshes::place(const Json& j, const std::string& path) {
     in_.check_keys(j, path, {"type", "of", "transforms"}, " for an instance");
     const std::vector<Placement> placements = expand(j, path);
@@ -137,6 +155,7 @@ void NamedMeshes::place(const Json& j, const std::string& path) {
     if (placed_triangles_ + triangles > kMaxPrimitiveIds)
         in_.fail(member_path(path, "transforms"), "the scene's instances would place more than the " +
                                                       std::to_string(kMaxPrimitiveIds) + " triangles a hit's 32-bit id can name");
+    check_memory(scene_.instances.size() + placements.size(), member_path(path, "transforms"));
     placed_triangles_ += triangles;
     for (const Placement& p : placements) scene_.instances.push_back({p.prototype, p.transform});
 }

@@ -42,6 +42,7 @@ private:
     uint32_t read_geometry(const std::string& name, const Json& j, const std::string& path);
     std::vector<Placement> expand(const Json& instance, const std::string& path);
     std::vector<glm::dmat4> read_transforms(const Json& instance, const std::string& path);
+    void check_memory(uint64_t count, const std::string& path) const;
 
     const Reader& in_;
     SceneDescription& scene_;
