@@ -67,6 +67,15 @@ public:
             for (std::size_t i = 0; i < model_.nodes.size(); ++i)
                 if (!is_child[i]) roots.push_back(int(i));
         }
+        // A mesh that several nodes place is read once and placed by each (the scene stores it
+        // once, as instances: core/instances/).
+        std::vector<int> users(model_.meshes.size(), 0);
+        for (const tinygltf::Node& n : model_.nodes)
+            if (n.mesh >= 0 && std::size_t(n.mesh) < users.size()) ++users[std::size_t(n.mesh)];
+        shared_index_.assign(model_.meshes.size(), MeshPiece::kNotShared);
+        for (std::size_t m = 0; m < users.size(); ++m)
+            if (users[m] > 1) shared_index_[m] = mesh_.shared_count++;
+        shared_read_.assign(mesh_.shared_count, false);
         for (int root : roots) visit(root, glm::dmat4(1.0), 0);
         // Points and lines alone are not "an empty mesh": say what the file has instead.
         if (mesh_.triangles.empty() && !first_skipped_.empty())
@@ -94,8 +103,18 @@ private:
             if (std::size_t(node.mesh) >= model_.meshes.size())
                 fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) + " does not exist");
             const tinygltf::Mesh& mesh = model_.meshes[std::size_t(node.mesh)];
-            for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-                read_primitive(mesh.primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p), world);
+            const uint32_t shared = shared_index_[std::size_t(node.mesh)];
+            if (shared != MeshPiece::kNotShared) mesh_.placements.push_back({shared, world});
+            if (shared == MeshPiece::kNotShared || !shared_read_[shared]) {
+                const std::size_t first_piece = mesh_.pieces.size();
+                for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+                    read_primitive(mesh.primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p),
+                                   shared == MeshPiece::kNotShared ? world : glm::dmat4(1.0));
+                if (shared != MeshPiece::kNotShared) {
+                    shared_read_[shared] = true;
+                    for (std::size_t p = first_piece; p < mesh_.pieces.size(); ++p) mesh_.pieces[p].shared = shared;
+                }
+            }
         }
         for (int child : node.children) visit(child, world, depth + 1);
     }
@@ -197,6 +216,8 @@ private:
     std::string path_;
     const tinygltf::Model& model_;
     ImportedMesh mesh_;
+    std::vector<uint32_t> shared_index_;  // per glTF mesh: its shared index, or kNotShared
+    std::vector<bool> shared_read_;
     bool all_have_normals_ = true;
     bool any_have_normals_ = false;
     uint64_t visits_ = 0;

@@ -51,35 +51,46 @@ NamedMeshes::Entry& NamedMeshes::resolve(const std::string& name, const std::str
         in_.check_keys(j, e.path, {"type", "of", "transforms"}, " for an instance");
         e.placements = expand(j, e.path);
     } else {
-        e.placements = {{read_geometry(name, j, e.path), glm::dmat4(1.0)}};
+        e.placements = read_geometry(name, j, e.path);
     }
     e.triangles = 0;
-    for (const Placement& p : e.placements) e.triangles += triangles_of_[p.prototype];
+    for (const Placement& p : e.placements) e.triangles += triangles_of(p.prototype);
     e.state = State::done;
     return e;
 }
 
-uint32_t NamedMeshes::read_geometry(const std::string& name, const Json& j, const std::string& path) {
+uint64_t NamedMeshes::triangles_of(uint32_t prototype) const {
+    uint64_t n = 0;
+    for (const TriangleMesh& part : scene_.prototypes[prototype].parts) n += part.triangles.size();
+    return n;
+}
+
+std::vector<NamedMeshes::Placement> NamedMeshes::read_geometry(const std::string& name, const Json& j, const std::string& path) {
     const std::size_t first_mesh = scene_.meshes.size(), spheres = scene_.spheres.size();
+    const std::size_t first_instance = scene_.instances.size();
     read_shape(in_, j, path, scene_, names_);
     if (scene_.spheres.size() != spheres)
         in_.fail(path, "a named mesh holds triangles only (a quad, mesh or mesh_file), got a sphere");
+    std::vector<Placement> placements;
+    // A glTF whose nodes share a mesh placed it by instances itself: those are this name's too.
+    for (std::size_t k = first_instance; k < scene_.instances.size(); ++k)
+        placements.push_back({scene_.instances[k].prototype, scene_.instances[k].transform});
+    scene_.instances.resize(first_instance);
+    if (scene_.meshes.size() == first_mesh) return placements;
     MeshPrototype proto;
     proto.name = name;
-    uint64_t triangles = 0;
     for (std::size_t i = first_mesh; i < scene_.meshes.size(); ++i) {
         const Material& m = scene_.materials[scene_.meshes[i].material];
         if (m.is_emissive())
             in_.fail(member_path(path, "material"), "an instanced mesh cannot emit (material " + Json(m.name).dump() +
                                                         "): the light table lists the scene's own triangles; "
                                                         "place it as a shape");
-        triangles += scene_.meshes[i].triangles.size();
         proto.parts.push_back(std::move(scene_.meshes[i]));
     }
     scene_.meshes.resize(first_mesh);
     scene_.prototypes.push_back(std::move(proto));
-    triangles_of_.push_back(triangles);
-    return uint32_t(scene_.prototypes.size() - 1);
+    placements.push_back({uint32_t(scene_.prototypes.size() - 1), glm::dmat4(1.0)});
+    return placements;
 }
 
 std::vector<NamedMeshes::Placement> NamedMeshes::expand(const Json& j, const std::string& path) {
@@ -149,7 +160,7 @@ void NamedMeshes::place(const Json& j, const std::string& path) {
     in_.check_keys(j, path, {"type", "of", "transforms"}, " for an instance");
     const std::vector<Placement> placements = expand(j, path);
     uint64_t triangles = 0;
-    for (const Placement& p : placements) triangles += triangles_of_[p.prototype];
+    for (const Placement& p : placements) triangles += triangles_of(p.prototype);
     if (scene_.instances.size() + placements.size() > kMaxInstances)
         in_.fail(member_path(path, "transforms"), "the scene's instances would number more than " + std::to_string(kMaxInstances));
     if (placed_triangles_ + triangles > kMaxPrimitiveIds)

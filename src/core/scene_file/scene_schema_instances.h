@@ -39,7 +39,8 @@ private:
     };
 
     Entry& resolve(const std::string& name, const std::string& path);
-    uint32_t read_geometry(const std::string& name, const Json& j, const std::string& path);
+    std::vector<Placement> read_geometry(const std::string& name, const Json& j, const std::string& path);
+    uint64_t triangles_of(uint32_t prototype) const;
     std::vector<Placement> expand(const Json& instance, const std::string& path);
     std::vector<glm::dmat4> read_transforms(const Json& instance, const std::string& path);
     void check_memory(uint64_t count, const std::string& path) const;
@@ -48,7 +49,6 @@ private:
     SceneDescription& scene_;
     MaterialNames& names_;
     std::map<std::string, Entry> entries_;
-    std::vector<uint64_t> triangles_of_;  // per prototype
     uint64_t placed_triangles_ = 0;
 };
 
