@@ -174,15 +174,28 @@ WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_
     });
 }
 
-template <Query Q, TriangleTest T, SphereTest S, int W, int MaxWidth>
-void trace_bvh_rays(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
-    constexpr int kLeafLanes = MaxWidth < int(kBvhMaxLeafSize) ? MaxWidth : int(kBvhMaxLeafSize);
-    constexpr int kNodeLanes = MaxWidth < W ? MaxWidth : W;
+// Lanes of a leaf test (a leaf holds at most 8 primitives) and of a node's box test, for
+// kernels at most MaxWidth wide.
+template <int MaxWidth>
+inline constexpr int kLeafLanes = MaxWidth < int(kBvhMaxLeafSize) ? MaxWidth : int(kBvhMaxLeafSize);
+template <int W, int MaxWidth>
+inline constexpr int kNodeLanes = MaxWidth < W ? MaxWidth : W;
+
+// Each ray of the queue by itself: its query state from its tmax, trace(i, state), its answer.
+template <Query Q, int MaxWidth, typename Trace>
+WT_KERNEL_INLINE void for_each_ray(const RayView& rays, QueryOutput<Q> out, Trace&& trace) {
     for (uint32_t i = 0; i < rays.count; ++i) {
-        SingleRayState<Q, kLeafLanes> state(rays.tmax ? rays.tmax[i] : kInfinity);
-        trace_one<T, S, Q, W, kNodeLanes, kLeafLanes>(bvh, rays, i, state);
+        SingleRayState<Q, kLeafLanes<MaxWidth>> state(rays.tmax ? rays.tmax[i] : kInfinity);
+        trace(i, state);
         state.write(out, i);
     }
+}
+
+template <Query Q, TriangleTest T, SphereTest S, int W, int MaxWidth>
+void trace_bvh_rays(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
+    for_each_ray<Q, MaxWidth>(rays, out, [&](uint32_t i, auto& state) __attribute__((always_inline)) {
+        trace_one<T, S, Q, W, kNodeLanes<W, MaxWidth>, kLeafLanes<MaxWidth>>(bvh, rays, i, state);
+    });
 }
 
 // Calls f(std::integral_constant<int, W>) for the tree's node width W.

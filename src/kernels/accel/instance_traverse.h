@@ -100,32 +100,22 @@ WT_KERNEL_INLINE void trace_instanced_one(const BvhView& bvh, const RayView& ray
 
 template <Query Q, TriangleTest T, SphereTest S, int W, int MaxWidth>
 void trace_instanced_rays(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
-    constexpr int kLeafLanes = MaxWidth < int(kBvhMaxLeafSize) ? MaxWidth : int(kBvhMaxLeafSize);
-    constexpr int kNodeLanes = MaxWidth < W ? MaxWidth : W;
-    for (uint32_t i = 0; i < rays.count; ++i) {
-        SingleRayState<Q, kLeafLanes> state(rays.tmax ? rays.tmax[i] : kInfinity);
-        trace_instanced_one<T, S, Q, W, kNodeLanes, kLeafLanes>(bvh, rays, i, state);
-        state.write(out, i);
-    }
+    for_each_ray<Q, MaxWidth>(rays, out, [&](uint32_t i, auto& state) __attribute__((always_inline)) {
+        trace_instanced_one<T, S, Q, W, kNodeLanes<W, MaxWidth>, kLeafLanes<MaxWidth>>(bvh, rays, i, state);
+    });
 }
 
 // The kernel table's BVH entries: a scene with instances takes the two-level walk one ray at a
 // time (also for the coherent rays the packet walk would take); one without, the walk it took
-// before instances existed.
-template <Query Q, TriangleTest T, SphereTest S, int MaxWidth>
+// before instances existed (Packets: camera rays N at a time).
+template <Query Q, TriangleTest T, SphereTest S, int N, bool Packets>
 void scene_bvh_query(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
     if (bvh.instances)
-        with_node_width(bvh, [&](auto width) { trace_instanced_rays<Q, T, S, width.value, MaxWidth>(bvh, rays, out); });
-    else
-        bvh_query<Q, T, S, MaxWidth>(bvh, rays, out);
-}
-
-template <Query Q, TriangleTest T, SphereTest S, int N>
-void scene_bvh_packet_query(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
-    if (bvh.instances)
         with_node_width(bvh, [&](auto width) { trace_instanced_rays<Q, T, S, width.value, N>(bvh, rays, out); });
-    else
+    else if constexpr (Packets)
         bvh_packet_query<Q, T, S, N>(bvh, rays, out);
+    else
+        bvh_query<Q, T, S, N>(bvh, rays, out);
 }
 
 }  // namespace WT_SIMD_ISA

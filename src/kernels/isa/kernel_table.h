@@ -20,10 +20,10 @@ constexpr IntersectKernels make_kernels(Isa isa) {
             &primpacket_brute_force<Query::closest, T, S, N>,
             &raypacket_brute_force<Query::any, T, S, N>,
             &primpacket_brute_force<Query::any, T, S, N>,
-            &scene_bvh_query<Query::closest, T, S, N>,
-            &scene_bvh_query<Query::any, T, S, N>,
-            &scene_bvh_packet_query<Query::closest, T, S, N>,
-            &scene_bvh_packet_query<Query::any, T, S, N>};
+            &scene_bvh_query<Query::closest, T, S, N, false>,
+            &scene_bvh_query<Query::any, T, S, N, false>,
+            &scene_bvh_query<Query::closest, T, S, N, true>,
+            &scene_bvh_query<Query::any, T, S, N, true>};
 }
 
 // One table entry per accuracy combination, in the order kernel_variant() indexes them:
