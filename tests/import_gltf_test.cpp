@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <nlohmann/json.hpp>
 
 #include "import_test_files.h"
@@ -145,13 +146,30 @@ TEST_F(GltfImport, NormalsFollowTheNodeRotation) {
 
 TEST_F(GltfImport, OnlyAMirroringNodeHasItsWindingReversed) {
     Json m = model("m.bin");
-    m["nodes"] = Json::array({{{"children", {1, 2}}}, {{"scale", {-1, 1, 1}}, {"mesh", 0}}, {{"mesh", 0}}});
+    // Mesh 1 a copy of mesh 0, so each node places its own mesh once (flattened, not instanced).
+    m["meshes"].push_back(m["meshes"][0]);
+    m["nodes"] = Json::array({{{"children", {1, 2}}}, {{"scale", {-1, 1, 1}}, {"mesh", 0}}, {{"mesh", 1}}});
     write("m.bin", buffer_bytes());
     write("m.gltf", m.dump());
     const TriangleMesh mesh = load_file("m.gltf").meshes[0];
     EXPECT_EQ(mesh.triangles, (Triangles{{0, 2, 1}, {3, 5, 4}, {3, 6, 5}, {7, 8, 9}, {10, 11, 12}, {10, 12, 13}}));
     expect_vec3_near(mesh.vertices[1], {-1, 0, 0});
     expect_vec3_near(mesh.vertices[8], {1, 0, 0});
+}
+
+// Shared, the mesh keeps the file's winding once and the mirroring is the instance's (whose
+// normals keep their side: instance_intersect_test.cpp).
+TEST_F(GltfImport, SharedMeshMirroredByOneNode) {
+    Json m = model("m.bin");
+    m["nodes"] = Json::array({{{"children", {1, 2}}}, {{"scale", {-1, 1, 1}}, {"mesh", 0}}, {{"mesh", 0}}});
+    write("m.bin", buffer_bytes());
+    write("m.gltf", m.dump());
+    const SceneDescription scene = load_file("m.gltf");
+    ASSERT_EQ(scene.prototypes.size(), 1u);
+    EXPECT_EQ(scene.prototypes[0].parts[0].triangles, (Triangles{{0, 1, 2}, {3, 4, 5}, {3, 5, 6}}));
+    ASSERT_EQ(scene.instances.size(), 2u);
+    EXPECT_LT(glm::determinant(glm::dmat3(scene.instances[0].transform)), 0.0);
+    EXPECT_GT(glm::determinant(glm::dmat3(scene.instances[1].transform)), 0.0);
 }
 
 TEST_F(GltfImport, MaterialsFromFile) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/scene.h"
+#include "core/scene_hash.h"
 #include "scene_test_helpers.h"
 
 namespace {
@@ -38,6 +39,17 @@ TEST(InstanceLoader, PlacesANamedMeshOnceStored) {
     EXPECT_EQ(scene.instances.instances.size(), 3u);
     EXPECT_EQ(scene.instances.triangle_count, 3u);
     EXPECT_EQ(scene.instances.first_id, scene.primitive_count());
+}
+
+// A checkpoint of one placement must not resume another: the hash sees the instances.
+TEST(InstanceLoader, SceneHashSeesTheInstances) {
+    const auto hash_of = [](const Json& transforms) {
+        return wt::scene_content_hash(parse_scene_json(with_instance(instance_of("tri", transforms)), kSource));
+    };
+    const Json one = Json::array({{{"translate", {1, 2, 3}}}});
+    EXPECT_EQ(hash_of(one), hash_of(one));
+    EXPECT_NE(hash_of(one), hash_of(Json::array({{{"translate", {1, 2, 4}}}})));
+    EXPECT_NE(hash_of(one), hash_of(Json::array({{{"translate", {1, 2, 3}}}, {{"translate", {1, 2, 3}}}})));
 }
 
 // Nested: a name that is an instance of another composes the transforms into single placements.

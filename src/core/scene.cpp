@@ -8,6 +8,8 @@
 #include <glm/common.hpp>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace wt {
 
@@ -47,6 +49,21 @@ float bounding_radius(const Scene& scene) {
     for (uint32_t i = 0; i < scene.spheres.size(); ++i) {
         const glm::vec3 c = scene.spheres.center(i);
         lo = glm::min(lo, c - scene.spheres.radius[i]), hi = glm::max(hi, c + scene.spheres.radius[i]);
+    }
+    // Each instance by its mesh's object box placed (corner by corner: the box of the box).
+    std::vector<std::pair<glm::vec3, glm::vec3>> boxes(scene.instances.meshes.size(), {glm::vec3(INFINITY), glm::vec3(-INFINITY)});
+    for (std::size_t m = 0; m < boxes.size(); ++m) {
+        const TriangleSoA& t = scene.instances.meshes[m].triangles;
+        for (std::size_t i = 0; i < t.size(); ++i)
+            for (const glm::vec3& v : {t.vertex0(i), t.vertex1(i), t.vertex2(i)})
+                boxes[m].first = glm::min(boxes[m].first, v), boxes[m].second = glm::max(boxes[m].second, v);
+    }
+    for (const Instance& k : scene.instances.instances) {
+        const auto& [box_lo, box_hi] = boxes[k.mesh];
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 p = k.to_world.point({(c & 1) ? box_hi.x : box_lo.x, (c & 2) ? box_hi.y : box_lo.y, (c & 4) ? box_hi.z : box_lo.z});
+            lo = glm::min(lo, p), hi = glm::max(hi, p);
+        }
     }
     const float r = 0.5f * glm::length(hi - lo);
     return r > 0.0f && std::isfinite(r) ? r : 1.0f;

@@ -69,9 +69,9 @@ public:
         }
         // A mesh that several nodes place is read once and placed by each (the scene stores it
         // once, as instances: core/instances/).
-        std::vector<int> users(model_.meshes.size(), 0);
-        for (const tinygltf::Node& n : model_.nodes)
-            if (n.mesh >= 0 && std::size_t(n.mesh) < users.size()) ++users[std::size_t(n.mesh)];
+        std::vector<uint32_t> users(model_.meshes.size(), 0);
+        uint64_t walked = 0;
+        for (int root : roots) count_uses(root, 0, walked, users);
         shared_index_.assign(model_.meshes.size(), MeshPiece::kNotShared);
         for (std::size_t m = 0; m < users.size(); ++m)
             if (users[m] > 1) shared_index_[m] = mesh_.shared_count++;
@@ -91,6 +91,15 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& what) const { throw MeshFileError(path_ + ": " + what); }
+
+    // How many times the walk from the roots places each mesh. Only counts: visit() says what is
+    // wrong with a bad hierarchy, and this walk stops where it would.
+    void count_uses(int index, int depth, uint64_t& walked, std::vector<uint32_t>& users) const {
+        if (index < 0 || std::size_t(index) >= model_.nodes.size() || depth > 256 || ++walked > (uint64_t(1) << 20)) return;
+        const tinygltf::Node& node = model_.nodes[std::size_t(index)];
+        if (node.mesh >= 0 && std::size_t(node.mesh) < users.size()) ++users[std::size_t(node.mesh)];
+        for (int child : node.children) count_uses(child, depth + 1, walked, users);
+    }
 
     void visit(int index, const glm::dmat4& parent, int depth) {
         if (index < 0 || std::size_t(index) >= model_.nodes.size()) fail("node " + std::to_string(index) + " does not exist");
