@@ -7,6 +7,7 @@
 
 #include "instance_scenes.h"
 #include "kernels/isa/intersect_dispatch.h"
+#include "kernels/memory_estimate.h"
 #include "render_helpers.h"
 
 namespace {
@@ -38,6 +39,25 @@ TEST(InstanceRender, AgreesWithFlattenedScene) {
 TEST(InstanceRender, BruteForceRefused) {
     const SceneDescription d = test::instanced_scene(test::test_placements(), false, 4);
     EXPECT_THROW(test::render_film(d, Integrator::wavefront, 1, 16, 2048, {}, Accel::brute), std::invalid_argument);
+}
+
+// The estimate counts the stored mesh once and bytes_per_instance() per placement: seven
+// placements cost the one placement's geometry and BVH, and six more instances.
+TEST(InstanceRender, MemoryEstimateCountsEachMeshOnce) {
+    const std::vector<glm::dmat4> seven = test::test_placements();
+    const Scene one = build_scene(test::instanced_scene({seven[0]}, true));
+    const Scene all = build_scene(test::instanced_scene(seven, true));
+    const Scene flat = build_scene(test::flattened(test::instanced_scene(seven, true)));
+    RenderOptions options;
+    options.threads = 1;
+    const MemoryEstimate e1 = estimate_render_memory(one, options), e7 = estimate_render_memory(all, options);
+    const MemoryEstimate ef = estimate_render_memory(flat, options);
+    EXPECT_EQ(e7.geometry, e1.geometry);
+    EXPECT_EQ(e7.bvh, e1.bvh);
+    EXPECT_EQ(e7.instance_count, 7u);
+    EXPECT_DOUBLE_EQ(e7.instances, 7.0 * bytes_per_instance(options.bvh.node_width));
+    EXPECT_GT(ef.geometry, 6.0 * e1.geometry);  // the flattened scene pays per copy
+    EXPECT_EQ(ef.instances, 0.0);
 }
 
 }  // namespace

@@ -79,11 +79,9 @@ std::size_t InstanceBvh::instance_bytes() const {
     return nodes4_.size() * sizeof(BvhNode<4>) + nodes8_.size() * sizeof(BvhNode<8>) + records_.size() * sizeof(InstanceRecord);
 }
 
-std::unique_ptr<InstanceBvh> build_instance_bvh(const Scene& scene, const Bvh& scene_tree, const BvhBuildOptions& options,
-                                                ThreadPool& pool) {
+std::unique_ptr<InstanceBvh> build_instance_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool& pool) {
     const SceneInstances& in = scene.instances;
     if (in.empty()) return nullptr;
-    (void)scene_tree;
     auto out = std::make_unique<InstanceBvh>();
     const std::size_t mesh_count = in.meshes.size();
 
@@ -102,13 +100,12 @@ std::unique_ptr<InstanceBvh> build_instance_bvh(const Scene& scene, const Bvh& s
             for (int a = 0; a < 3; ++a) reach[k.mesh][a] = std::max(reach[k.mesh][a], float(std::fabs(p[a])));
         }
 
-    BvhBuildOptions mesh_options = options;
     out->meshes_.reserve(mesh_count);
     out->mesh_views_.resize(mesh_count);
     const SphereSoA no_spheres;
     for (std::size_t m = 0; m < mesh_count; ++m) {
         out->meshes_.push_back(
-            build_bvh(in.meshes[m].triangles, no_spheres, scene.settings.accuracy.triangles, reach[m], mesh_options, &pool));
+            build_bvh(in.meshes[m].triangles, no_spheres, scene.settings.accuracy.triangles, reach[m], options, &pool));
         out->mesh_views_[m] = bvh_view(out->meshes_[m]);
     }
 

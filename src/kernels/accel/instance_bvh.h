@@ -27,7 +27,7 @@ public:
     std::size_t instance_bytes() const;
 
 private:
-    friend std::unique_ptr<InstanceBvh> build_instance_bvh(const Scene&, const Bvh&, const BvhBuildOptions&, ThreadPool&);
+    friend std::unique_ptr<InstanceBvh> build_instance_bvh(const Scene&, const BvhBuildOptions&, ThreadPool&);
 
     std::vector<Bvh> meshes_;
     std::vector<BvhView> mesh_views_;
@@ -37,9 +37,8 @@ private:
     InstanceView view_{};
 };
 
-// Null for a scene without instances. `scene_tree`: the scene's own tree, whose view gets
-// `instances` pointed at the result by the caller. Throws std::invalid_argument as build_bvh.
-std::unique_ptr<InstanceBvh> build_instance_bvh(const Scene& scene, const Bvh& scene_tree, const BvhBuildOptions& options,
-                                                ThreadPool& pool);
+// Null for a scene without instances; the caller points its scene tree's view's `instances` at
+// the result's view (scene_bvh.h). Throws std::invalid_argument as build_bvh.
+std::unique_ptr<InstanceBvh> build_instance_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool& pool);
 
 }  // namespace wt

@@ -27,7 +27,7 @@ inline SceneBvh build_scene_bvh(const Scene& scene, const BvhBuildOptions& optio
     if (!scene.instances.empty()) {
         std::unique_ptr<ThreadPool> own;
         if (!pool) own = std::make_unique<ThreadPool>(options.threads > 0 ? options.threads : 1), pool = own.get();
-        b.instances = build_instance_bvh(scene, b.tree, options, *pool);
+        b.instances = build_instance_bvh(scene, options, *pool);
         b.view.instances = &b.instances->view();
     }
     return b;
