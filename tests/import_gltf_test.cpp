@@ -5,9 +5,11 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <nlohmann/json.hpp>
 
 #include "import_test_files.h"
+#include "instance_scenes.h"
 
 namespace {
 
@@ -75,21 +77,29 @@ void expect_vec3_near(const glm::vec3& actual, const glm::vec3& expected) {
     EXPECT_NEAR(actual.z, expected.z, 1e-5f);
 }
 
+// Mesh 0 is placed by two nodes: stored once in its own space, placed by two instances.
 void expect_the_model(const SceneDescription& scene) {
-    ASSERT_EQ(scene.meshes.size(), 1u);
-    const TriangleMesh& mesh = scene.meshes[0];
-    // Two instances of (triangle 3 vertices + square 4 vertices); the lines add none.
-    ASSERT_EQ(mesh.vertices.size(), 14u);
-    EXPECT_EQ(mesh.triangles, (Triangles{{0, 1, 2}, {3, 4, 5}, {3, 5, 6}, {7, 8, 9}, {10, 11, 12}, {10, 12, 13}}));
+    ASSERT_EQ(scene.meshes.size(), 0u);
+    ASSERT_EQ(scene.prototypes.size(), 1u);
+    ASSERT_EQ(scene.prototypes[0].parts.size(), 1u);
+    ASSERT_EQ(scene.instances.size(), 2u);
+    const TriangleMesh& mesh = scene.prototypes[0].parts[0];
+    // The triangle's 3 vertices and the square's 4; the lines add none.
+    ASSERT_EQ(mesh.vertices.size(), 7u);
+    EXPECT_EQ(mesh.triangles, (Triangles{{0, 1, 2}, {3, 4, 5}, {3, 5, 6}}));
+    const SceneDescription placed = wt::test::flattened(scene);
+    ASSERT_EQ(placed.meshes.size(), 2u);
+    const std::vector<glm::vec3>& first = placed.meshes[0].vertices;
+    const std::vector<glm::vec3>& second = placed.meshes[1].vertices;
     // Node 1: x -> T(10,0,0) Rz(90) S(2) x. (1,0,0) -> (2,0,0) -> (0,2,0) -> (10,2,0).
-    expect_vec3_near(mesh.vertices[0], {10, 0, 0});
-    expect_vec3_near(mesh.vertices[1], {10, 2, 0});
-    expect_vec3_near(mesh.vertices[2], {8, 0, 0});
-    expect_vec3_near(mesh.vertices[5], {8, 2, 2});  // the square's (1, 1, 1)
+    expect_vec3_near(first[0], {10, 0, 0});
+    expect_vec3_near(first[1], {10, 2, 0});
+    expect_vec3_near(first[2], {8, 0, 0});
+    expect_vec3_near(first[5], {8, 2, 2});  // the square's (1, 1, 1)
     // Node 2 adds its own (0, 0, 5) first: (1,0,0) -> (1,0,5) -> (2,0,10) -> (0,2,10) -> (10,2,10).
-    expect_vec3_near(mesh.vertices[7], {10, 0, 10});
-    expect_vec3_near(mesh.vertices[8], {10, 2, 10});
-    expect_vec3_near(mesh.vertices[12], {8, 2, 12});
+    expect_vec3_near(second[0], {10, 0, 10});
+    expect_vec3_near(second[1], {10, 2, 10});
+    expect_vec3_near(second[5], {8, 2, 12});
     // The square has no NORMAL, so the mesh has no file normals.
     EXPECT_TRUE(mesh.normals.empty());
     ASSERT_EQ(scene.notes.size(), 2u);  // the LINES primitive (once, though placed twice), the normals
@@ -110,6 +120,19 @@ TEST_F(GltfImport, GlbIsTheSame) {
     expect_the_model(load_file("m.glb"));
 }
 
+// A shared mesh with an emissive material (the file's "lamp") cannot be instanced (the light
+// table lists the scene's own triangles): it is placed flattened, once per node, as before.
+TEST_F(GltfImport, SharedEmissiveMeshIsFlattened) {
+    write("m.bin", buffer_bytes());
+    write("m.gltf", model("m.bin").dump());
+    const SceneDescription scene = load(R"({"type": "mesh_file", "file": "m.gltf", "material": "from_file"})");
+    EXPECT_TRUE(scene.instances.empty());
+    ASSERT_EQ(scene.meshes.size(), 4u);  // (red triangle, lamp square) per node
+    expect_vec3_near(scene.meshes[0].vertices[1], {10, 2, 0});
+    expect_vec3_near(scene.meshes[2].vertices[1], {10, 2, 10});
+    EXPECT_TRUE(scene.materials[scene.meshes[1].material].is_emissive());
+}
+
 TEST_F(GltfImport, NormalsFollowTheNodeRotation) {
     Json m = model("m.bin");
     m["meshes"][0]["primitives"] = Json::array({m["meshes"][0]["primitives"][0]});
@@ -123,13 +146,30 @@ TEST_F(GltfImport, NormalsFollowTheNodeRotation) {
 
 TEST_F(GltfImport, OnlyAMirroringNodeHasItsWindingReversed) {
     Json m = model("m.bin");
-    m["nodes"] = Json::array({{{"children", {1, 2}}}, {{"scale", {-1, 1, 1}}, {"mesh", 0}}, {{"mesh", 0}}});
+    // Mesh 1 a copy of mesh 0, so each node places its own mesh once (flattened, not instanced).
+    m["meshes"].push_back(m["meshes"][0]);
+    m["nodes"] = Json::array({{{"children", {1, 2}}}, {{"scale", {-1, 1, 1}}, {"mesh", 0}}, {{"mesh", 1}}});
     write("m.bin", buffer_bytes());
     write("m.gltf", m.dump());
     const TriangleMesh mesh = load_file("m.gltf").meshes[0];
     EXPECT_EQ(mesh.triangles, (Triangles{{0, 2, 1}, {3, 5, 4}, {3, 6, 5}, {7, 8, 9}, {10, 11, 12}, {10, 12, 13}}));
     expect_vec3_near(mesh.vertices[1], {-1, 0, 0});
     expect_vec3_near(mesh.vertices[8], {1, 0, 0});
+}
+
+// Shared, the mesh keeps the file's winding once and the mirroring is the instance's (whose
+// normals keep their side: instance_intersect_test.cpp).
+TEST_F(GltfImport, SharedMeshMirroredByOneNode) {
+    Json m = model("m.bin");
+    m["nodes"] = Json::array({{{"children", {1, 2}}}, {{"scale", {-1, 1, 1}}, {"mesh", 0}}, {{"mesh", 0}}});
+    write("m.bin", buffer_bytes());
+    write("m.gltf", m.dump());
+    const SceneDescription scene = load_file("m.gltf");
+    ASSERT_EQ(scene.prototypes.size(), 1u);
+    EXPECT_EQ(scene.prototypes[0].parts[0].triangles, (Triangles{{0, 1, 2}, {3, 4, 5}, {3, 5, 6}}));
+    ASSERT_EQ(scene.instances.size(), 2u);
+    EXPECT_LT(glm::determinant(glm::dmat3(scene.instances[0].transform)), 0.0);
+    EXPECT_GT(glm::determinant(glm::dmat3(scene.instances[1].transform)), 0.0);
 }
 
 TEST_F(GltfImport, MaterialsFromFile) {

@@ -388,7 +388,7 @@ TEST(SceneErrors, DuplicateKey) {
 TEST(SceneErrors, UnknownTopLevelKey) {
     // "lights" is a section now; "light" is the typo it most likely comes as.
     expect_scene_error(mutated([](Json& j) { j["light"] = Json::array(); }),
-                       "light: unknown key (allowed: camera, render, materials, shapes, lights)");
+                       "light: unknown key (allowed: camera, render, materials, meshes, shapes, lights)");
 }
 
 TEST(SceneErrors, UnknownCameraKey) {
@@ -531,7 +531,7 @@ TEST(SceneErrors, MissingMaterialType) {
 
 TEST(SceneErrors, MissingShapeType) {
     expect_scene_error(mutated([](Json& j) { j["shapes"][1].erase("type"); }),
-                       "shapes[1].type: required key is missing (one of quad, mesh, sphere, mesh_file)");
+                       "shapes[1].type: required key is missing (one of quad, mesh, sphere, mesh_file, instance)");
 }
 
 TEST(SceneErrors, MissingShapeMaterial) {
@@ -721,7 +721,7 @@ TEST(SceneErrors, NoShapes) {
 
 TEST(SceneErrors, UnknownShapeType) {
     expect_scene_error(mutated([](Json& j) { j["shapes"][0]["type"] = "cube"; }),
-                       "shapes[0].type: unknown shape type (allowed: quad, mesh, sphere, mesh_file), got string \"cube\"");
+                       "shapes[0].type: unknown shape type (allowed: quad, mesh, sphere, mesh_file, instance), got string \"cube\"");
 }
 
 TEST(SceneErrors, MissingMaterialIsNamed) {

@@ -1,11 +1,15 @@
 #include "core/scene.h"
 
+#include "core/instances/build_instances.h"
+
 #include <algorithm>
 #include <cmath>
 
 #include <glm/common.hpp>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace wt {
 
@@ -16,9 +20,12 @@ bool light_traces_caustics(const SceneDescription& d) {
     if (d.camera.projection == Projection::orthographic) return false;
     const auto has = [&](bool (Material::*property)() const) {
         const auto used = [&](uint32_t material) { return (d.materials[material].*property)(); };
-        return std::any_of(d.meshes.begin(), d.meshes.end(),
-                           [&](const TriangleMesh& m) { return !m.triangles.empty() && used(m.material); }) ||
-               std::any_of(d.spheres.begin(), d.spheres.end(), [&](const Sphere& s) { return used(s.material); });
+        const auto in_mesh = [&](const TriangleMesh& m) { return !m.triangles.empty() && used(m.material); };
+        return std::any_of(d.meshes.begin(), d.meshes.end(), in_mesh) ||
+               std::any_of(d.spheres.begin(), d.spheres.end(), [&](const Sphere& s) { return used(s.material); }) ||
+               std::any_of(d.prototypes.begin(), d.prototypes.end(), [&](const MeshPrototype& p) {
+                   return std::any_of(p.parts.begin(), p.parts.end(), in_mesh);
+               });
     };
     // Area lights are triangles only: an emissive sphere is not sampled as a light. Light paths
     // start at the "lights" list's lights too.
@@ -44,6 +51,21 @@ BoundingSphere bounding_sphere(const Scene& scene) {
     for (uint32_t i = 0; i < scene.spheres.size(); ++i) {
         const glm::vec3 c = scene.spheres.center(i);
         lo = glm::min(lo, c - scene.spheres.radius[i]), hi = glm::max(hi, c + scene.spheres.radius[i]);
+    }
+    // Each instance by its mesh's object box placed (corner by corner: the box of the box).
+    std::vector<std::pair<glm::vec3, glm::vec3>> boxes(scene.instances.meshes.size(), {glm::vec3(INFINITY), glm::vec3(-INFINITY)});
+    for (std::size_t m = 0; m < boxes.size(); ++m) {
+        const TriangleSoA& t = scene.instances.meshes[m].triangles;
+        for (std::size_t i = 0; i < t.size(); ++i)
+            for (const glm::vec3& v : {t.vertex0(i), t.vertex1(i), t.vertex2(i)})
+                boxes[m].first = glm::min(boxes[m].first, v), boxes[m].second = glm::max(boxes[m].second, v);
+    }
+    for (const Instance& k : scene.instances.instances) {
+        const auto& [box_lo, box_hi] = boxes[k.mesh];
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 p = k.to_world.point({(c & 1) ? box_hi.x : box_lo.x, (c & 2) ? box_hi.y : box_lo.y, (c & 4) ? box_hi.z : box_lo.z});
+            lo = glm::min(lo, p), hi = glm::max(hi, p);
+        }
     }
     if (!(lo.x <= hi.x)) return {glm::vec3(0.0f), 1.0f};  // nothing in the scene
     const float r = 0.5f * glm::length(hi - lo);
@@ -88,6 +110,7 @@ Scene build_scene(const SceneDescription& description) {
     for (const Sphere& sphere : description.spheres) {
         scene.spheres.push_back(sphere.center, sphere.radius, sphere.material);
     }
+    build_instances(description, scene.primitive_count(), scene.instances);
     scene.has_rough_materials = std::any_of(scene.materials.begin(), scene.materials.end(),
                                             [](const Material& m) { return m.is_microfacet(); });
     scene.lights = LightTable(scene.triangles, scene.materials);

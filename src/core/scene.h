@@ -11,6 +11,7 @@
 #include "core/camera.h"
 #include "core/film/pixel_filter.h"
 #include "core/geometry_soa.h"
+#include "core/instances/scene_instances.h"
 #include "core/light_table.h"
 #include "core/lights/scene_lights.h"
 #include "core/ray.h"
@@ -28,6 +29,9 @@ struct Scene {
     TriangleSoA triangles;
     ShadingNormalTable shading_normals;  // empty unless some mesh has vertex normals
     SphereSoA spheres;
+    // Meshes stored once and placed by instances, their ids after the spheres'; empty unless the
+    // description has instances, and then the renderer traces the flat BVH alone.
+    SceneInstances instances;
     LightTable lights;  // the emissive triangles
     // The scene file's "lights" list, with the area lights as one entry of its selection; empty
     // without the list, and then no code reads it (the integrators pick their loop once).
@@ -44,6 +48,7 @@ struct Scene {
     // scenes run the loop they ran before rough materials existed (kernels/wavefront/shade_queue.h).
     bool has_rough_materials = false;
 
+    // The scene's own primitives, not the instances' (those are always traced through a BVH).
     uint32_t primitive_count() const { return uint32_t(triangles.size() + spheres.size()); }
 };
 
@@ -74,6 +79,10 @@ struct SurfacePoint {
     bool smooth;
 };
 
+// A hit on an instanced triangle (hit.prim >= scene.instances.first_id): the point, its error
+// bound and the normals in world space. Out of line, so the flat scenes' surface_at() stays as it was.
+SurfacePoint instance_surface_at(const Scene& scene, const Hit& hit);
+
 // Always inlined: g++'s choice to inline it into a shade loop hangs on the rest of the
 // translation unit, and beside other instantiations of the loop (one per estimator, and the
 // loops that record AOVs) it chose a call, which cost the loop several percent.
@@ -97,6 +106,7 @@ struct SurfacePoint {
         s.material = t.material[hit.prim];
     } else {
         const uint32_t i = hit.prim - triangle_count;
+        if (i >= scene.spheres.size()) return instance_surface_at(scene, hit);
         const glm::vec3 c = scene.spheres.center(i);
         const float r = scene.spheres.radius[i];
         s.normal = glm::normalize(ray.origin + hit.t * ray.direction - c);

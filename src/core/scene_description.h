@@ -9,6 +9,7 @@
 
 #include <memory>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/accuracy.h"
@@ -70,6 +71,19 @@ struct TriangleMesh {
     // for a flat-shaded mesh, which shades with the geometric normal. Ray offsets and the
     // side a ray is on always use the geometric normal.
     std::vector<glm::vec3> normals;
+};
+
+// A named mesh that instances place (the scene file's "meshes"; a glTF mesh used by several
+// nodes): its parts, one per material, in its own (object) coordinates. Drawn only by instances.
+struct MeshPrototype {
+    std::string name;
+    std::vector<TriangleMesh> parts;
+};
+
+// One placement of a prototype: object -> world, affine and invertible (the loader checks).
+struct InstanceDescription {
+    uint32_t prototype = 0;  // index into SceneDescription::prototypes
+    glm::dmat4 transform{1.0};
 };
 
 struct Sphere {
@@ -147,6 +161,8 @@ struct SceneDescription {
     std::vector<Material> materials;
     std::vector<TriangleMesh> meshes;
     std::vector<Sphere> spheres;
+    std::vector<MeshPrototype> prototypes;   // usually empty: meshes stored once, placed by instances
+    std::vector<InstanceDescription> instances;
     std::vector<LightDescription> lights;  // beside the emissive materials; usually empty
     // One line each, for the user, about what the loader skipped or could not map (degenerate
     // triangles dropped from a mesh file, its textures, ...); never an error. The CLI prints them.

@@ -68,6 +68,18 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         h.value(mesh.material), h.value(mesh.parallelogram);
     }
     h.array(d.spheres);
+    // Only when there are some: a scene without instances keeps the hash it had.
+    if (!d.instances.empty()) {
+        h.word(d.prototypes.size());
+        for (const MeshPrototype& p : d.prototypes) {
+            h.bytes(p.name.data(), p.name.size());
+            h.word(p.parts.size());
+            for (const TriangleMesh& mesh : p.parts)
+                h.array(mesh.vertices), h.array(mesh.triangles), h.array(mesh.normals), h.value(mesh.material);
+        }
+        h.word(d.instances.size());
+        for (const InstanceDescription& k : d.instances) h.value(k.prototype), h.value(k.transform);
+    }
     // Only when there are some: a scene without the list keeps the hash it had.
     if (!d.lights.empty()) {
         h.word(d.lights.size());

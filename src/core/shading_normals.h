@@ -11,6 +11,9 @@
 
 namespace wt {
 
+// The unit blend (1 - u - v) n0 + u n1 + v n2, or `geometric` where it cancels or is not finite.
+glm::vec3 blend_normals(const glm::vec3& n0, const glm::vec3& n1, const glm::vec3& n2, float u, float v, const glm::vec3& geometric);
+
 class ShadingNormalTable {
 public:
     bool empty() const { return records_.empty(); }
@@ -27,6 +30,8 @@ public:
     // Out of line: inlined into surface_at() it made g++ stop inlining surface_at() itself,
     // which costs every flat scene.
     glm::vec3 at(std::size_t i, float u, float v, const glm::vec3& geometric) const;
+    // Triangle i's three vertex normals; false (and nothing written) for a flat triangle.
+    bool vertex_normals(std::size_t i, glm::vec3 out[3]) const;
 
 private:
     static constexpr uint32_t kFlat = ~uint32_t(0);

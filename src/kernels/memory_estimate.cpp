@@ -1,10 +1,7 @@
 #include "kernels/memory_estimate.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include "kernels/accel/bvh_view.h"
@@ -38,17 +35,32 @@ namespace {
 // (rows and rows - 1 floats), a PrimRef, at most two binary nodes, and the wide nodes, which
 // the collapse reserves at one per four primitives.
 double bvh_bytes(const Scene& scene, const RenderOptions& options) {
-    const double primitives = double(scene.primitive_count());
+    double primitives = double(scene.primitive_count());
+    for (const InstancedMesh& m : scene.instances.meshes) primitives += double(m.triangles.size());  // each mesh once
     const double rows = scene.settings.accuracy.triangles == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
     const double node = options.bvh.node_width == 4 ? sizeof(BvhNode<4>) : sizeof(BvhNode<8>);
     return primitives * ((2.0 * rows - 1.0) * sizeof(float) + sizeof(PrimRef) + 2.0 * sizeof(BinaryNode) + node / 4.0);
 }
 
-// TriangleSoA: 21 float rows and a material index per triangle; SphereSoA: 4 and one.
+// TriangleSoA: 21 float rows and a material index per triangle; SphereSoA: 4 and one; an
+// instanced mesh's triangles once, however many instances place it.
 double geometry_bytes(const Scene& scene) {
-    return double(scene.triangles.size()) * (21 * sizeof(float) + sizeof(uint32_t)) +
-           double(scene.spheres.size()) * (4 * sizeof(float) + sizeof(uint32_t));
+    double triangles = double(scene.triangles.size());
+    for (const InstancedMesh& m : scene.instances.meshes) triangles += double(m.triangles.size());
+    return triangles * (21 * sizeof(float) + sizeof(uint32_t)) + double(scene.spheres.size()) * (4 * sizeof(float) + sizeof(uint32_t));
 }
+
+}  // namespace
+
+double bytes_per_instance(int node_width) {
+    // Its placement in the scene and in the traversal's records, and the top level's build: a
+    // PrimRef, two binary nodes, and one wide node per W - 1 instances (one instance per leaf).
+    const double node = node_width == 4 ? sizeof(BvhNode<4>) : sizeof(BvhNode<8>);
+    return double(sizeof(Instance) + sizeof(InstanceRecord) + sizeof(PrimRef) + 2 * sizeof(BinaryNode)) +
+           node / double(node_width - 1);
+}
+
+namespace {
 
 }  // namespace
 
@@ -65,21 +77,13 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
             options.aovs.needs_path_data()));
     if (scene.light_traces_caustics) e.queues_per_worker += double(LightTracingPass::bytes_per_worker());
     const int lanes = intersect_kernels(options.isa.value_or(best_supported_isa()), s.accuracy).width;
-    if (resolve_accel(options.accel, scene.primitive_count(), lanes) == Accel::bvh) e.bvh = bvh_bytes(scene, options);
+    if (resolve_accel(options.accel, scene.primitive_count(), lanes, !scene.instances.empty()) == Accel::bvh)
+        e.bvh = bvh_bytes(scene, options);
     e.geometry = geometry_bytes(scene);
     if (scene.merges_photons) e.photons = photon_batch_bytes(scene, options.photon_batch_paths);
+    e.instance_count = scene.instances.instances.size();
+    if (e.instance_count > 0) e.instances = double(e.instance_count) * bytes_per_instance(options.bvh.node_width);
     return e;
-}
-
-double available_memory_bytes() {
-    std::ifstream meminfo("/proc/meminfo");
-    std::string key;
-    double kib = 0.0;
-    std::string unit;
-    while (meminfo >> key >> kib >> unit)
-        if (key == "MemAvailable:") return kib * 1024.0;
-    const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
-    return pages > 0 && page_size > 0 ? double(pages) * double(page_size) : 0.0;
 }
 
 std::string format_bytes(double bytes) {
@@ -96,16 +100,20 @@ std::string memory_problem(const MemoryEstimate& e, double available) {
     std::ostringstream msg;
     msg << "the render needs about " << format_bytes(e.total()) << " (film " << format_bytes(e.film) << ", "
         << e.workers << " worker" << (e.workers > 1 ? "s" : "") << " x " << format_bytes(e.queues_per_worker)
-        << " of wavefront queues, BVH " << format_bytes(e.bvh) << ", geometry " << format_bytes(e.geometry)
-        << (e.photons > 0.0 ? ", photon maps " + format_bytes(e.photons) : std::string())
-        << "), more than the " << format_bytes(available) << " of memory available; ";
+        << " of wavefront queues, BVH " << format_bytes(e.bvh) << ", geometry " << format_bytes(e.geometry);
+    if (e.photons > 0.0) msg << ", photon maps " << format_bytes(e.photons);
+    if (e.instance_count > 0)
+        msg << ", " << e.instance_count << " instances x " << format_bytes(e.instances / double(e.instance_count));
+    msg << "), more than the " << format_bytes(available) << " of memory available; ";
     // Name what dominates.
-    if (e.photons >= e.queues() && e.photons >= e.film && e.photons >= e.bvh)
+    if (e.photons >= e.queues() && e.photons >= e.film && e.photons >= e.bvh && e.photons >= e.instances)
         msg << "lower --light-paths-per-pixel (a batch holds at least one sample's photons) or use --caustics light_tracing";
     else if (e.queues() >= e.film && e.queues() >= e.bvh)
         msg << "lower --shadow-rays, --tile-size or --batch-paths, or use fewer --threads";
-    else if (e.film >= e.bvh)
+    else if (e.film >= e.bvh && e.film >= e.instances)
         msg << "lower --width and --height";
+    else if (e.instances > e.bvh)
+        msg << "place fewer instances";
     else
         msg << "use --accel brute (no BVH, slower) or a smaller scene";
     return msg.str();

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 
+#include "core/available_memory.h"
 #include "core/scene.h"
 #include "kernels/renderer.h"
 
@@ -24,19 +25,22 @@ struct MemoryEstimate {
     double bvh = 0.0;               // nodes, leaf blocks and the build's temporaries at their peak
     double geometry = 0.0;          // the scene's primitive arrays (already allocated when this is asked)
     double photons = 0.0;           // one batch of photon maps at its peak (kernels/photons/photon_memory.h), expected
+    double instances = 0.0;         // placements, their records and the top-level tree (part allocated)
+    std::size_t instance_count = 0;
 
     double queues() const { return queues_per_worker * double(workers); }
     // What the render has yet to allocate.
-    double to_allocate() const { return film + queues() + bvh + photons; }
+    double to_allocate() const { return film + queues() + bvh + photons + instances; }
     double total() const { return to_allocate() + geometry; }
 };
+
+// What one instance costs, whatever its mesh: its placement, its traversal record and its share
+// of the top-level tree and of that tree's build.
+double bytes_per_instance(int node_width);
 
 // For the options' threads (0: one per hardware thread), integrator, kernels and accel.
 MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& options);
 
-// MemAvailable from /proc/meminfo (free memory plus what the kernel can reclaim), else the
-// machine's physical memory; 0 if neither is known.
-double available_memory_bytes();
 
 // "needs 11.3 GB (film 2.6 MB, 2 workers x 5.6 GB of wavefront queues, BVH 0 B, geometry 2.0 kB),
 // more than the 20.1 GB available; lower --shadow-rays or --tile-size, or use fewer --threads"

@@ -43,13 +43,12 @@ RenderSession::RenderSession(const Scene& scene, const RenderOptions& options)
       tiles_(make_tiles(scene.settings.width, scene.settings.height, options.tile_size)), pool_(threads_),
       kernels_(&intersect_kernels(isa_, scene.settings.accuracy)),
       counts_(std::size_t(threads_)), workspaces_(std::size_t(threads_)), sampled_pixels_(std::size_t(threads_)) {
-    accel_ = resolve_accel(options.accel, scene.primitive_count(), kernels_->width);
-    if (accel_ == Accel::bvh) {
-        bvh_ = build_bvh(scene, options.bvh, &pool_);
-        bvh_tree_ = bvh_view(bvh_);
-    }
+    accel_ = resolve_accel(options.accel, scene.primitive_count(), kernels_->width, !scene.instances.empty());
+    if (accel_ != Accel::bvh && !scene.instances.empty())
+        throw std::invalid_argument("render: a scene with instances is traced through its BVH only; use --accel bvh or auto");
+    if (accel_ == Accel::bvh) bvh_ = build_scene_bvh(scene, options.bvh, &pool_);
     if (scene.light_traces_caustics)
-        light_tracing_ = std::make_unique<LightTracingPass>(scene, accel_ == Accel::bvh ? &bvh_tree_ : nullptr, threads_);
+        light_tracing_ = std::make_unique<LightTracingPass>(scene, accel_ == Accel::bvh ? &bvh_.view : nullptr, threads_);
     if (scene.merges_photons) photons_ = std::make_unique<PhotonMaps>(scene);
 }
 
@@ -81,7 +80,7 @@ void RenderSession::render_samples(Film& film, SampleRange range, const std::fun
 }
 
 void RenderSession::trace_light_paths(Film& film, SampleRange range, PhotonMaps* photons) {
-    const IntersectContext context{scene_view(scene_), kernels_, accel_ == Accel::bvh ? &bvh_tree_ : nullptr};
+    const IntersectContext context{scene_view(scene_), kernels_, accel_ == Accel::bvh ? &bvh_.view : nullptr};
     light_tracing_->render(film, range.begin, range.end, pool_, counts_,
                            options_.integrator == Integrator::wavefront ? &context : nullptr, photons);
 }
@@ -105,7 +104,7 @@ void RenderSession::render_camera_paths(Film& film, SampleRange range, const std
 
 void RenderSession::render_tiles(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done,
                                  const AdaptiveState* adaptive) {
-    const BvhView* tree = accel_ == Accel::bvh ? &bvh_tree_ : nullptr;
+    const BvhView* tree = accel_ == Accel::bvh ? &bvh_.view : nullptr;
     const IntersectContext context{scene_view(scene_), kernels_, tree};
     pool_.parallel_for(tiles_.size(), [&](std::size_t item, int worker) {
         const Tile& tile = tiles_[item];
@@ -146,7 +145,12 @@ RenderResult RenderSession::result() const {
     result.threads = threads_;
     result.isa = isa_;
     result.accel = accel_;
-    result.bvh = bvh_.stats();
+    result.bvh = bvh_.tree.stats();
+    if (bvh_.instances) {
+        result.instance_count = bvh_.instances->instance_count();
+        result.instanced_mesh_bytes = bvh_.instances->mesh_bytes();
+        result.instance_bytes = bvh_.instances->instance_bytes() + scene_.instances.instances.size() * sizeof(Instance);
+    }
     if (photons_) result.photon_maps_built = photons_->maps_built();
     return result;
 }

@@ -19,6 +19,7 @@
 #include "kernels/accel/accel_choice.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/accel/bvh_view.h"
+#include "kernels/accel/scene_bvh.h"
 #include "kernels/isa/intersect_kernels.h"
 #include "kernels/render_stats.h"
 #include "kernels/wavefront/tiles.h"
@@ -49,6 +50,10 @@ struct RenderResult {
     Isa isa = Isa::scalar;  // kernels the wavefront integrator used
     Accel accel = Accel::brute;  // what `automatic` resolved to
     BvhStats bvh;                // when accel is bvh: the tree's size and build time
+    // With instances: how many, and the bytes of their meshes' trees (each once) and of the
+    // top level with the instances' records.
+    std::size_t instance_count = 0;
+    std::size_t instanced_mesh_bytes = 0, instance_bytes = 0;
     uint64_t photon_maps_built = 0;  // with photons: the samples whose photons some camera path gathered
 };
 
@@ -110,8 +115,7 @@ private:
     std::vector<Tile> tiles_;
     ThreadPool pool_;
     const IntersectKernels* kernels_;
-    Bvh bvh_;
-    BvhView bvh_tree_;
+    SceneBvh bvh_;
     std::vector<RayCounts> counts_;
     // Created by the worker that uses it, on first use, so its pages live near that core.
     std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces_;

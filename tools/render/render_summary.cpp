@@ -83,6 +83,16 @@ void print_render_summary(std::ostream& out, const RenderSummary& m) {
         out << "  BVH memory       " << with_si_prefix(double(b.node_bytes + b.primitive_bytes)) << "B ("
             << double(b.node_bytes) / prims << " B/primitive nodes, " << double(b.primitive_bytes) / prims
             << " B/primitive leaf data)\n";
+        if (result.instance_count > 0) {
+            const SceneInstances& in = m.scene->instances;
+            uint64_t stored = 0;
+            for (const InstancedMesh& mesh : in.meshes) stored += mesh.triangles.size();
+            out << "  instances        " << result.instance_count << " of " << in.meshes.size() << " mesh"
+                << (in.meshes.size() == 1 ? "" : "es") << ", " << with_si_prefix(double(stored)) << " triangles stored once, "
+                << with_si_prefix(double(in.triangle_count)) << " placed; meshes' trees "
+                << with_si_prefix(double(result.instanced_mesh_bytes)) << "B, "
+                << double(result.instance_bytes) / double(result.instance_count) << " B per instance\n";
+        }
     } else {
         out << "  acceleration     none (flat list of " << m.scene->primitive_count() << " primitives)\n";
     }

@@ -6,23 +6,23 @@
 #include "kernels/accel/accel_choice.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/accel/bvh_view.h"
+#include "kernels/accel/scene_bvh.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/renderer.h"
 
 namespace wt {
 
 struct ReplayAccel {
-    Bvh bvh;
-    BvhView tree;
+    SceneBvh bvh;
     bool use_bvh = false;
 
     ReplayAccel(const Scene& scene, const RenderOptions& options) {
         const int width = intersect_kernels(options.isa.value_or(best_supported_isa())).width;
-        use_bvh = resolve_accel(options.accel, scene.primitive_count(), width) == Accel::bvh;
-        if (use_bvh) bvh = build_bvh(scene, options.bvh), tree = bvh_view(bvh);
+        use_bvh = resolve_accel(options.accel, scene.primitive_count(), width, !scene.instances.empty()) == Accel::bvh;
+        if (use_bvh) bvh = build_scene_bvh(scene, options.bvh, nullptr);
     }
     // The tree, or null for the flat list.
-    const BvhView* view() const { return use_bvh ? &tree : nullptr; }
+    const BvhView* view() const { return use_bvh ? &bvh.view : nullptr; }
 };
 
 }  // namespace wt

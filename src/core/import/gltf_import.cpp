@@ -69,6 +69,15 @@ public:
             for (std::size_t i = 0; i < model_.nodes.size(); ++i)
                 if (!is_child[i]) roots.push_back(int(i));
         }
+        // A mesh that several nodes place is read once and placed by each (the scene stores it
+        // once, as instances: core/instances/).
+        std::vector<uint32_t> users(model_.meshes.size(), 0);
+        uint64_t walked = 0;
+        for (int root : roots) count_uses(root, 0, walked, users);
+        shared_index_.assign(model_.meshes.size(), MeshPiece::kNotShared);
+        for (std::size_t m = 0; m < users.size(); ++m)
+            if (users[m] > 1) shared_index_[m] = mesh_.shared_count++;
+        shared_read_.assign(mesh_.shared_count, false);
         for (int root : roots) visit(root, glm::dmat4(1.0), 0);
         // Points and lines alone are not "an empty mesh": say what the file has instead.
         if (mesh_.triangles.empty() && !first_skipped_.empty())
@@ -85,6 +94,15 @@ public:
 private:
     [[noreturn]] void fail(const std::string& what) const { throw MeshFileError(path_ + ": " + what); }
 
+    // How many times the walk from the roots places each mesh. Only counts: visit() says what is
+    // wrong with a bad hierarchy, and this walk stops where it would.
+    void count_uses(int index, int depth, uint64_t& walked, std::vector<uint32_t>& users) const {
+        if (index < 0 || std::size_t(index) >= model_.nodes.size() || depth > 256 || ++walked > (uint64_t(1) << 20)) return;
+        const tinygltf::Node& node = model_.nodes[std::size_t(index)];
+        if (node.mesh >= 0 && std::size_t(node.mesh) < users.size()) ++users[std::size_t(node.mesh)];
+        for (int child : node.children) count_uses(child, depth + 1, walked, users);
+    }
+
     void visit(int index, const glm::dmat4& parent, int depth) {
         if (index < 0 || std::size_t(index) >= model_.nodes.size()) fail("node " + std::to_string(index) + " does not exist");
         if (depth > 256) fail("node " + std::to_string(index) + ": the node hierarchy is deeper than 256 (a cycle?)");
@@ -96,8 +114,18 @@ private:
             if (std::size_t(node.mesh) >= model_.meshes.size())
                 fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) + " does not exist");
             const tinygltf::Mesh& mesh = model_.meshes[std::size_t(node.mesh)];
-            for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-                read_primitive(mesh.primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p), world);
+            const uint32_t shared = shared_index_[std::size_t(node.mesh)];
+            if (shared != MeshPiece::kNotShared) mesh_.placements.push_back({shared, world});
+            if (shared == MeshPiece::kNotShared || !shared_read_[shared]) {
+                const std::size_t first_piece = mesh_.pieces.size();
+                for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+                    read_primitive(mesh.primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p),
+                                   shared == MeshPiece::kNotShared ? world : glm::dmat4(1.0));
+                if (shared != MeshPiece::kNotShared) {
+                    shared_read_[shared] = true;
+                    for (std::size_t p = first_piece; p < mesh_.pieces.size(); ++p) mesh_.pieces[p].shared = shared;
+                }
+            }
         }
         if (const int light = gltf_node_light(node); light != -1) read_gltf_light(path_, model_, light, world, mesh_);
         for (int child : node.children) visit(child, world, depth + 1);
@@ -200,6 +228,8 @@ private:
     std::string path_;
     const tinygltf::Model& model_;
     ImportedMesh mesh_;
+    std::vector<uint32_t> shared_index_;  // per glTF mesh: its shared index, or kNotShared
+    std::vector<bool> shared_read_;
     bool all_have_normals_ = true;
     bool any_have_normals_ = false;
     uint64_t visits_ = 0;

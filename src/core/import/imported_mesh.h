@@ -29,6 +29,17 @@ struct MeshPiece {
     std::size_t first_vertex = 0;
     std::size_t vertex_count = 0;
     glm::dmat4 transform{1.0};
+    // A piece of a mesh the file places more than once (glTF: a mesh several nodes use): the
+    // index of that shared mesh, its vertices stored once in its own space (transform the
+    // identity) and placed by ImportedMesh::placements. kNotShared for every other piece.
+    uint32_t shared = kNotShared;
+    static constexpr uint32_t kNotShared = UINT32_MAX;
+};
+
+// One placement of a shared mesh: the node's world transform.
+struct SharedMeshPlacement {
+    uint32_t shared = 0;
+    glm::dmat4 transform{1.0};
 };
 
 // A material as the file describes it, already mapped to ours; `name` is the file's own.
@@ -45,6 +56,8 @@ struct ImportedMesh {
     std::vector<uint32_t> triangle_materials;
     std::vector<ImportedMaterial> materials;
     std::vector<MeshPiece> pieces;   // cover `positions` in order
+    std::vector<SharedMeshPlacement> placements;  // empty unless some piece is shared
+    uint32_t shared_count = 0;
     std::vector<std::string> notes;  // what was skipped, for the user (one line each)
     // Lights the file places (glTF's KHR_lights_punctual), in its coordinates with the pieces'
     // transforms applied, as the scene's "lights" list holds them.

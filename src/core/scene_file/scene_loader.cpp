@@ -10,7 +10,7 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
     const Json root = parse_json(text, source_name);
     const Reader in(source_name);
     in.expect_object(root, "");
-    in.check_keys(root, "", {"camera", "render", "materials", "shapes", "lights"});
+    in.check_keys(root, "", {"camera", "render", "materials", "meshes", "shapes", "lights"});
 
     SceneDescription scene;
     // Fixed order, whatever the file's: shapes need the materials.
@@ -27,7 +27,7 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
                                            "orthographic one); use \"path\"");
     }
     scene.materials = read_materials(in, in.required(root, "materials", ""), "materials");
-    read_shapes(in, in.required(root, "shapes", ""), "shapes", scene);
+    read_shapes(in, in.required(root, "shapes", ""), "shapes", scene, in.optional(root, "meshes"));
     // The list's lights first, then those the mesh files placed (read with the shapes).
     if (const Json* lights = in.optional(root, "lights")) {
         std::vector<LightDescription> listed = read_lights(in, *lights, "lights");

@@ -29,8 +29,13 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
                           MaterialNames& names);
 // The "lights" list (environment maps are read here, relative to the scene file's directory).
 std::vector<LightDescription> read_lights(const Reader& in, const Json& j, const std::string& path);
+// One quad, mesh, sphere or mesh_file shape (not an instance): appends to scene.meshes or
+// scene.spheres (and to scene.materials and scene.notes, for mesh files).
+void read_shape(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene, MaterialNames& names);
 // Needs scene.materials; appends to scene.meshes and scene.spheres (and to scene.materials and
-// scene.notes, for mesh files).
-void read_shapes(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene);
+// scene.notes, for mesh files), and for instances to scene.prototypes and scene.instances.
+// `meshes`: the file's "meshes" object (named meshes for instances), or null.
+void read_shapes(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene,
+                 const Json* meshes = nullptr);
 
 }  // namespace wt

@@ -4,10 +4,13 @@
 #include <utility>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include "core/geometry_soa.h"
 #include "core/import/mesh_file.h"
 #include "core/import/place_mesh.h"
+#include "core/import/shared_meshes.h"
+#include "core/instances/build_instances.h"
 #include "core/scene_file/scene_schema.h"
 #include "core/scene_file/triangle_size.h"
 
@@ -96,6 +99,18 @@ void split_by_material(const ImportedMesh& mesh, const std::vector<uint32_t>& ou
     }
 }
 
+// A part placed by m as place_mesh would place it: positions in double rounded once, normals by
+// the inverse transpose, the winding reversed under a mirroring m.
+TriangleMesh placed_copy(const TriangleMesh& part, const glm::dmat4& m) {
+    TriangleMesh out = part;
+    const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(m)));
+    for (glm::vec3& v : out.vertices) v = glm::vec3(m * glm::dvec4(glm::dvec3(v), 1.0));
+    for (glm::vec3& n : out.normals) n = glm::vec3(glm::normalize(normal_matrix * glm::dvec3(n)));
+    if (glm::determinant(glm::dmat3(m)) < 0.0)
+        for (auto& tri : out.triangles) std::swap(tri[1], tri[2]);
+    return out;
+}
+
 }  // namespace
 
 void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene,
@@ -123,16 +138,33 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
     } catch (const MeshFileError& e) {
         in.fail(file_path, e.what());
     }
-    const std::size_t triangles_in_file = mesh.triangles.size();
-    const std::size_t dropped = place_mesh(mesh, transform, normals);
+    // A file that places a mesh more than once (glTF nodes sharing a mesh) has it stored once and
+    // placed by instances; its materials are then taken from the whole file before the split.
+    const bool has_shared = mesh.shared_count > 0;
+    std::vector<std::string> unmapped;
+    std::vector<uint32_t> ours;
+    if (from_file && has_shared) ours = add_file_materials(mesh, file, scene, names, unmapped);
+    std::vector<ImportedMesh> shared = take_shared_meshes(mesh);
+    const std::vector<SharedMeshPlacement> placements = std::move(mesh.placements);
     const std::string note = in.source() + ": " + file_path + ": " + resolved + ": ";
     for (const std::string& n : mesh.notes) scene.notes.push_back(note + n);
-    if (dropped > 0)
-        scene.notes.push_back(note + "dropped " + std::to_string(dropped) + " degenerate (zero-area) triangles of " +
-                              std::to_string(triangles_in_file));
-    if (mesh.triangles.empty())
-        in.fail(file_path, resolved + ": every triangle is degenerate (zero area)" +
-                               (j.contains("transform") ? " after the transform" : ""));
+    // One TriangleMesh per material (from_file), else the whole mesh in the scene's material.
+    const auto add_parts = [&](ImportedMesh& m, std::vector<TriangleMesh>& out) {
+        if (from_file) return split_by_material(m, ours, out);
+        TriangleMesh whole;
+        whole.vertices = std::move(m.positions);
+        whole.triangles = std::move(m.triangles);
+        whole.normals = std::move(m.normals);
+        whole.material = scene_material;
+        out.push_back(std::move(whole));
+    };
+    const auto place = [&](ImportedMesh& m, const glm::dmat4& t, const std::string& what) {
+        const std::size_t in_file = m.triangles.size();
+        const std::size_t dropped = place_mesh(m, t, normals);
+        if (dropped > 0)
+            scene.notes.push_back(note + "dropped " + std::to_string(dropped) + " degenerate (zero-area) triangles of " +
+                                  std::to_string(in_file) + what);
+    };
 
     // The file's lights (glTF's KHR_lights_punctual), through the shape's transform as its triangles.
     for (LightDescription l : mesh.lights) {
@@ -146,18 +178,44 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
     }
 
     const std::size_t first_new = scene.meshes.size();
-    if (from_file) {
-        std::vector<std::string> unmapped;
-        const std::vector<uint32_t> ours = add_file_materials(mesh, file, scene, names, unmapped);
-        if (!unmapped.empty()) scene.notes.push_back(note + "not mapped from its materials: " + join(unmapped));
-        split_by_material(mesh, ours, scene.meshes);
-    } else {
-        TriangleMesh whole;
-        whole.vertices = std::move(mesh.positions);
-        whole.triangles = std::move(mesh.triangles);
-        whole.normals = std::move(mesh.normals);
-        whole.material = scene_material;
-        scene.meshes.push_back(std::move(whole));
+    place(mesh, transform, "");
+    if (mesh.triangles.empty() && shared.empty())
+        in.fail(file_path, resolved + ": every triangle is degenerate (zero area)" +
+                               (j.contains("transform") ? " after the transform" : ""));
+    if (from_file && !has_shared) ours = add_file_materials(mesh, file, scene, names, unmapped);
+    if (!unmapped.empty()) scene.notes.push_back(note + "not mapped from its materials: " + join(unmapped));
+    if (!mesh.triangles.empty()) add_parts(mesh, scene.meshes);
+    for (uint32_t s = 0; s < shared.size(); ++s) {
+        place(shared[s], glm::dmat4(1.0), " of shared mesh " + std::to_string(s));
+        if (shared[s].triangles.empty()) continue;
+        MeshPrototype proto;
+        proto.name = file + "#" + std::to_string(s);
+        add_parts(shared[s], proto.parts);
+        const bool emits = std::any_of(proto.parts.begin(), proto.parts.end(),
+                                       [&](const TriangleMesh& p) { return scene.materials[p.material].is_emissive(); });
+        std::vector<glm::dmat4> transforms;
+        for (const SharedMeshPlacement& p : placements) {
+            if (p.shared != s) continue;
+            const glm::dmat4 m = transform * p.transform;
+            const std::string problem = instance_transform_problem(m);
+            if (problem.empty()) transforms.push_back(m);
+            else scene.notes.push_back(note + "skipped a placement of shared mesh " + std::to_string(s) + ": its transform " + problem);
+        }
+        // The light table lists the scene's own triangles: an emitting shared mesh is placed
+        // flattened, once per placement, as before instancing.
+        if (emits) {
+            for (const glm::dmat4& m : transforms)
+                for (const TriangleMesh& part : proto.parts) scene.meshes.push_back(placed_copy(part, m));
+            continue;
+        }
+        uint64_t triangles = 0;
+        for (const TriangleMesh& part : proto.parts) triangles += part.triangles.size();
+        if (double(triangles) * double(transforms.size()) > double(kMaxPrimitiveIds))
+            in.fail(file_path, resolved + ": shared mesh " + std::to_string(s) + " placed " + std::to_string(transforms.size()) +
+                                   " times makes more than the " + std::to_string(kMaxPrimitiveIds) +
+                                   " triangles a hit's 32-bit id can name");
+        scene.prototypes.push_back(std::move(proto));
+        for (const glm::dmat4& m : transforms) scene.instances.push_back({uint32_t(scene.prototypes.size() - 1), m});
     }
     // The light table cannot sample a triangle stored collapsed (see is_sliver).
     for (std::size_t i = first_new; i < scene.meshes.size(); ++i) {

@@ -5,6 +5,7 @@
 
 #include "core/geometry_soa.h"
 #include "core/scene_file/scene_schema.h"
+#include "core/scene_file/scene_schema_instances.h"
 #include "core/scene_file/triangle_size.h"
 
 // The shapes section: quads, inline meshes and spheres here, mesh files in import/.
@@ -12,7 +13,7 @@
 namespace wt {
 namespace {
 
-constexpr const char* kShapeTypes = "quad, mesh, sphere, mesh_file";
+constexpr const char* kShapeTypes = "quad, mesh, sphere, mesh_file, instance";
 
 std::vector<glm::vec3> read_vertices(const Reader& in, const Json& j, const std::string& path) {
     in.expect_array(j, path);
@@ -92,6 +93,8 @@ Sphere read_sphere(const Reader& in, const Json& j, const std::string& path) {
     return s;
 }
 
+}  // namespace
+
 void read_shape(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene,
                 MaterialNames& names) {
     in.expect_object(j, path);
@@ -126,9 +129,6 @@ void read_shape(const Reader& in, const Json& j, const std::string& path, SceneD
     scene.meshes.push_back(std::move(mesh));
 }
 
-
-}  // namespace
-
 // The light table samples emissive triangles by area and skips empty ones, so a zero-area light
 // would vanish without a word; it is nearly always a wrong vertex index or coordinate.
 void check_light_triangles(const Reader& in, const TriangleMesh& mesh, const std::string& path) {
@@ -148,11 +148,19 @@ void check_light_triangles(const Reader& in, const TriangleMesh& mesh, const std
     }
 }
 
-void read_shapes(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene) {
+void read_shapes(const Reader& in, const Json& j, const std::string& path, SceneDescription& scene, const Json* meshes) {
     in.expect_array(j, path);
     if (j.empty()) in.fail(path, "a scene needs at least one shape, got an empty array");
     MaterialNames names(scene.materials);
-    for (std::size_t i = 0; i < j.size(); ++i) read_shape(in, j[i], element_path(path, i), scene, names);
+    NamedMeshes named(in, meshes, scene, names);
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        const Json& shape = j[i];
+        const Json* type = shape.is_object() ? in.optional(shape, "type") : nullptr;
+        if (type && type->is_string() && type->get<std::string>() == "instance")
+            named.place(shape, element_path(path, i));
+        else
+            read_shape(in, shape, element_path(path, i), scene, names);
+    }
 }
 
 

@@ -30,9 +30,11 @@ const char* accel_name(Accel accel);
 std::optional<Accel> parse_accel(const std::string& name);  // "auto", "bvh", "brute"
 
 // What `automatic` resolves to for a scene of `primitives` primitives traced by kernels of
-// `kernel_width` lanes.
-inline Accel resolve_accel(Accel requested, uint32_t primitives, int kernel_width) {
+// `kernel_width` lanes. Instances are traced through their two-level BVH only: with them,
+// `automatic` is the BVH (and `brute` is refused by the renderer).
+inline Accel resolve_accel(Accel requested, uint32_t primitives, int kernel_width, bool has_instances = false) {
     if (requested != Accel::automatic) return requested;
+    if (has_instances) return Accel::bvh;
     return primitives < bvh_crossover(kernel_width) ? Accel::brute : Accel::bvh;
 }
 

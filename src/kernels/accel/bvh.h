@@ -49,7 +49,7 @@ public:
     int node_width() const { return node_width_; }
 
 private:
-    friend Bvh build_bvh(const Scene&, const BvhBuildOptions&, ThreadPool*);
+    friend Bvh build_bvh(const TriangleSoA&, const SphereSoA&, TriangleTest, const glm::vec3&, const BvhBuildOptions&, ThreadPool*);
     friend BvhView bvh_view(const Bvh&);
 
     int node_width_ = 8;
@@ -63,6 +63,10 @@ private:
 // Builds on `pool` when given (the renderer's), else on a pool of options.threads threads.
 // Throws std::invalid_argument for bad options or a scene too large to index.
 Bvh build_bvh(const Scene& scene, const BvhBuildOptions& options = {}, ThreadPool* pool = nullptr);
+// Over any primitive arrays (an instanced mesh's, in object space). `eye`: the point farthest
+// from the origin, per axis, that rays start from, which sizes the boxes' rounding pad.
+Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTest test, const glm::vec3& eye,
+              const BvhBuildOptions& options, ThreadPool* pool);
 
 BvhView bvh_view(const Bvh& bvh);
 

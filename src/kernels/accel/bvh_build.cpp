@@ -10,6 +10,7 @@
 
 #include "core/thread_pool.h"
 #include "kernels/accel/bvh_boxes.h"
+#include "kernels/accel/bvh_collapse.h"
 #include "kernels/accel/sah_builder.h"
 
 namespace wt {
@@ -45,9 +46,8 @@ PrimRef triangle_ref(const TriangleSoA& t, std::size_t i) {
 
 // In scene id order, in parallel over fixed chunks: count what each chunk keeps, then fill;
 // every primitive's leaf record (`records`, record_size() floats each) on the way.
-std::vector<PrimRef> primitive_refs(const Scene& scene, const BvhPrimitives& primitives, float* records, ThreadPool& pool) {
-    const TriangleSoA& t = scene.triangles;
-    const SphereSoA& s = scene.spheres;
+std::vector<PrimRef> primitive_refs(const TriangleSoA& t, const SphereSoA& s, const BvhPrimitives& primitives, float* records,
+                                    ThreadPool& pool) {
     constexpr std::size_t kChunk = 1 << 16;
     const std::size_t chunks = (t.size() + kChunk - 1) / kChunk;
     std::vector<std::size_t> kept(chunks + 1, 0);
@@ -60,12 +60,12 @@ std::vector<PrimRef> primitive_refs(const Scene& scene, const BvhPrimitives& pri
     pool.parallel_for(chunks, [&](std::size_t c, int) {
         std::size_t out = kept[c];
         for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i) {
-            primitives.write_record(scene, i, records + i * stride);
+            primitives.write_record(t, s, i, records + i * stride);
             if (!never_hit(t, i)) refs[out++] = triangle_ref(t, i);
         }
     });
     for (std::size_t i = 0; i < s.size(); ++i) {
-        primitives.write_record(scene, t.size() + i, records + (t.size() + i) * stride);
+        primitives.write_record(t, s, t.size() + i, records + (t.size() + i) * stride);
         const glm::vec3 c = s.center(i), r(s.radius[i]);
         Box box;
         box.extend_point(c - r), box.extend_point(c + r);
@@ -73,80 +73,6 @@ std::vector<PrimRef> primitive_refs(const Scene& scene, const BvhPrimitives& pri
     }
     return refs;
 }
-
-// Lays the binary tree out as W-wide nodes in depth-first order from the root, and lists the
-// leaves for fill_leaf_blocks.
-template <int W>
-class WideCollapser {
-public:
-    WideCollapser(const BinaryTree& tree, const std::vector<PrimRef>& refs, float pad, AlignedVector<BvhNode<W>>& nodes)
-        : tree_(tree), refs_(refs), pad_(pad), nodes_(nodes) {}
-
-    uint32_t emit(uint32_t binary) {
-        const BinaryNode& b = tree_.nodes[binary];
-        return b.is_leaf() ? emit_leaf(b) : emit_inner(b);
-    }
-
-    // Sums for the SAH cost of the result: node boxes' areas, leaf areas times their counts.
-    double node_area_sum = 0.0, leaf_area_sum = 0.0;
-    std::vector<const BinaryNode*> leaves;  // in the order they were met
-
-private:
-    uint32_t emit_inner(const BinaryNode& b) {
-        // Open the child with the largest surface area until there are W (as Embree's BVH4/8
-        // builders do): the children most rays enter are the ones worth testing together.
-        uint32_t children[W];
-        int n = 2;
-        children[0] = b.left;
-        children[1] = b.right;
-        while (n < W) {
-            int widest = -1;
-            float widest_area = -1.0f;
-            for (int c = 0; c < n; ++c) {
-                const BinaryNode& child = tree_.nodes[children[c]];
-                const float area = child.box().half_area();
-                if (!child.is_leaf() && area > widest_area) widest = c, widest_area = area;
-            }
-            if (widest < 0) break;
-            const BinaryNode& open = tree_.nodes[children[widest]];
-            children[widest] = open.left;
-            children[n++] = open.right;
-        }
-        const uint32_t index = uint32_t(nodes_.size());
-        nodes_.emplace_back();
-        node_area_sum += b.box().half_area();
-        for (int c = 0; c < W; ++c) {
-            for (int row = 0; row < 6; ++row) nodes_[index].bounds[row][c] = (row & 1) ? -kInf : kInf;
-            nodes_[index].child[c] = kBvhEmptyChild;
-        }
-        for (int c = 0; c < n; ++c) {
-            const uint32_t ref = emit(children[c]);  // may reallocate nodes_: index it afresh
-            const Box padded = tree_.nodes[children[c]].box().padded(pad_);
-            BvhNode<W>& node = nodes_[index];
-            for (int a = 0; a < 3; ++a) {
-                node.bounds[2 * a][c] = padded.lo_at(a);
-                node.bounds[2 * a + 1][c] = padded.hi_at(a);
-            }
-            node.child[c] = ref;
-        }
-        return index;
-    }
-
-    // The leaf's primitives keep their place in `refs` (the partitions made each leaf a
-    // contiguous run there), so the blocks can be filled later, in parallel (fill_leaf_blocks).
-    uint32_t emit_leaf(const BinaryNode& b) {
-        leaves.push_back(&b);
-        leaf_area_sum += double(b.box().half_area()) * b.count;
-        const uint32_t kind = refs_[b.first].kind;
-        return kBvhLeafBit | (kind << kBvhKindShift) | ((b.count - 1) << kBvhCountShift) | b.first;
-    }
-
-    static constexpr float kInf = std::numeric_limits<float>::infinity();
-    const BinaryTree& tree_;
-    const std::vector<PrimRef>& refs_;
-    const float pad_;
-    AlignedVector<BvhNode<W>>& nodes_;
-};
 
 // The leaves' primitive data, in parallel over fixed chunks of leaves.
 void fill_leaf_blocks(const float* records, const std::vector<PrimRef>& refs, const std::vector<const BinaryNode*>& leaves,
@@ -183,6 +109,11 @@ uint32_t collapse(const float* records, const BinaryTree& tree, const std::vecto
 }  // namespace
 
 Bvh build_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool* pool) {
+    return build_bvh(scene.triangles, scene.spheres, scene.settings.accuracy.triangles, scene.camera.eye(), options, pool);
+}
+
+Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTest test, const glm::vec3& eye,
+              const BvhBuildOptions& options, ThreadPool* pool) {
     if (options.node_width != 4 && options.node_width != 8)
         throw std::invalid_argument("BVH: node width must be 4 or 8, got " + std::to_string(options.node_width));
     if (options.max_leaf_size < 1 || options.max_leaf_size > int(kBvhMaxLeafSize))
@@ -197,10 +128,10 @@ Bvh build_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool* po
 
     Bvh bvh;
     bvh.node_width_ = options.node_width;
-    bvh.primitives_.test = scene.settings.accuracy.triangles;
+    bvh.primitives_.test = test;
     // Not initialised: primitive_refs writes every record, in parallel.
-    const std::unique_ptr<float[]> records(new float[(scene.triangles.size() + scene.spheres.size()) * bvh.primitives_.record_size()]);
-    std::vector<PrimRef> refs = primitive_refs(scene, bvh.primitives_, records.get(), *pool);
+    const std::unique_ptr<float[]> records(new float[(triangles.size() + spheres.size()) * bvh.primitives_.record_size()]);
+    std::vector<PrimRef> refs = primitive_refs(triangles, spheres, bvh.primitives_, records.get(), *pool);
     if (refs.size() > kBvhMaxLeafPrimitives)
         throw std::invalid_argument("BVH: " + std::to_string(refs.size()) + " primitives, more than the " +
                                     std::to_string(kBvhMaxLeafPrimitives) + " its leaf references can index");
@@ -213,7 +144,7 @@ Bvh build_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool* po
             throw std::invalid_argument("BVH: tree too deep for the traversal stack (" + std::to_string(tree.max_depth) +
                                         " levels)");
         bvh.stats_.max_depth = tree.max_depth;
-        const float pad = rounding_pad(tree.nodes[tree.root].box(), scene.camera.eye());
+        const float pad = rounding_pad(tree.nodes[tree.root].box(), eye);
         bvh.root_ = options.node_width == 4 ? collapse<4>(records.get(), tree, refs, pad, bvh.nodes4_, bvh.primitives_, bvh.stats_, *pool)
                                             : collapse<8>(records.get(), tree, refs, pad, bvh.nodes8_, bvh.primitives_, bvh.stats_, *pool);
     }

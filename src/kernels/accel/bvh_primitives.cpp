@@ -11,10 +11,8 @@ float id_bits(uint32_t id) {
 }
 }  // namespace
 
-void BvhPrimitives::write_record(const Scene& scene, std::size_t i, float* out) const {
-    const TriangleSoA& t = scene.triangles;
+void BvhPrimitives::write_record(const TriangleSoA& t, const SphereSoA& s, std::size_t i, float* out) const {
     if (i >= t.size()) {
-        const SphereSoA& s = scene.spheres;
         const std::size_t k = i - t.size();
         const float row[] = {s.cx[k], s.cy[k], s.cz[k], s.radius[k]};
         std::memcpy(out, row, sizeof row);

@@ -27,7 +27,7 @@ struct BvhPrimitives {
     // the leaves, which visit the primitives in tree order, reads one record per primitive
     // instead of one cache line from each of a dozen arrays.
     uint32_t record_size() const { return rows() - 1; }
-    void write_record(const Scene& scene, std::size_t id, float* out) const;
+    void write_record(const TriangleSoA& triangles, const SphereSoA& spheres, std::size_t id, float* out) const;
     // Writes the block of the leaf whose primitives, scene ids ids[0 .. count), start at index
     // `first`; all of one kind.
     void fill_leaf(const float* records, uint32_t first, const uint32_t* ids, uint32_t count, bool spheres);

@@ -110,16 +110,18 @@ WT_KERNEL_INLINE void sort_far_to_near(uint32_t* refs, float* t, int count) {
     }
 }
 
-template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L>
-WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, SingleRayState<Q, L>& state) {
-    const BvhNode<W>* nodes = static_cast<const BvhNode<W>*>(bvh.nodes);
-    const SingleRay<L> ray = broadcast_ray<L>(rays, i);
-    const TriangleRays<T, L> tri_ray(ray.o, ray.d);
-    const BoxRay<V> box_ray(rays, i);
+// The generic loop: one ray's walk of one tree (`tree_nodes`, from child reference `root`),
+// nearest child first for closest hits, test_leaf(ref) at each leaf it reaches, stopping when
+// the state says so. The flat tree's leaves are primitive blocks; the instances' top level's
+// leaves are instances, each of which walks its mesh's tree with this same loop.
+template <Query Q, int W, int V, typename State, typename TestLeaf>
+WT_KERNEL_INLINE void traverse_tree(const void* tree_nodes, uint32_t root, const BoxRay<V>& box_ray, State& state,
+                                    TestLeaf&& test_leaf) {
+    const BvhNode<W>* nodes = static_cast<const BvhNode<W>*>(tree_nodes);
     uint32_t stack_ref[kBvhStackSize];
     float stack_t[kBvhStackSize];
     int top = 0;
-    uint32_t ref = bvh.root;
+    uint32_t ref = root;
     for (;;) {
         if (!(ref & kBvhLeafBit)) {
             const BvhNode<W>& node = nodes[ref];
@@ -153,7 +155,7 @@ WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_
                 continue;
             }
         } else {
-            test_leaf<T, S, Q, L>(bvh, ref, ray, tri_ray, state);
+            test_leaf(ref);
             if (state.done()) return;
         }
         // Next entry still nearer than the closest hit so far (entries were pushed with
@@ -166,15 +168,38 @@ WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_
     }
 }
 
-template <Query Q, TriangleTest T, SphereTest S, int W, int MaxWidth>
-void trace_bvh_rays(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
-    constexpr int kLeafLanes = MaxWidth < int(kBvhMaxLeafSize) ? MaxWidth : int(kBvhMaxLeafSize);
-    constexpr int kNodeLanes = MaxWidth < W ? MaxWidth : W;
+template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L>
+WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, SingleRayState<Q, L>& state) {
+    const SingleRay<L> ray = broadcast_ray<L>(rays, i);
+    const TriangleRays<T, L> tri_ray(ray.o, ray.d);
+    const BoxRay<V> box_ray(rays, i);
+    traverse_tree<Q, W, V>(bvh.nodes, bvh.root, box_ray, state, [&](uint32_t ref) __attribute__((always_inline)) {
+        test_leaf<T, S, Q, L>(bvh, ref, ray, tri_ray, state);
+    });
+}
+
+// Lanes of a leaf test (a leaf holds at most 8 primitives) and of a node's box test, for
+// kernels at most MaxWidth wide.
+template <int MaxWidth>
+inline constexpr int kLeafLanes = MaxWidth < int(kBvhMaxLeafSize) ? MaxWidth : int(kBvhMaxLeafSize);
+template <int W, int MaxWidth>
+inline constexpr int kNodeLanes = MaxWidth < W ? MaxWidth : W;
+
+// Each ray of the queue by itself: its query state from its tmax, trace(i, state), its answer.
+template <Query Q, int MaxWidth, typename Trace>
+WT_KERNEL_INLINE void for_each_ray(const RayView& rays, QueryOutput<Q> out, Trace&& trace) {
     for (uint32_t i = 0; i < rays.count; ++i) {
-        SingleRayState<Q, kLeafLanes> state(rays.tmax ? rays.tmax[i] : kInfinity);
-        trace_one<T, S, Q, W, kNodeLanes, kLeafLanes>(bvh, rays, i, state);
+        SingleRayState<Q, kLeafLanes<MaxWidth>> state(rays.tmax ? rays.tmax[i] : kInfinity);
+        trace(i, state);
         state.write(out, i);
     }
+}
+
+template <Query Q, TriangleTest T, SphereTest S, int W, int MaxWidth>
+void trace_bvh_rays(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
+    for_each_ray<Q, MaxWidth>(rays, out, [&](uint32_t i, auto& state) __attribute__((always_inline)) {
+        trace_one<T, S, Q, W, kNodeLanes<W, MaxWidth>, kLeafLanes<MaxWidth>>(bvh, rays, i, state);
+    });
 }
 
 // Calls f(std::integral_constant<int, W>) for the tree's node width W.

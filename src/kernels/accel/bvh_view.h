@@ -47,6 +47,8 @@ constexpr uint32_t kMollerTrumboreRows = 13;  // v0 xyz, e1 xyz, e2 xyz, scaled 
 constexpr uint32_t kWatertightRows = 10;      // v0 xyz, v1 xyz, v2 xyz, id
 constexpr uint32_t kSphereRows = 5;           // centre xyz, radius, id
 
+struct InstanceView;
+
 struct BvhView {
     const void* nodes;    // BvhNode<node_width>[]
     uint32_t node_width;  // 4 or 8
@@ -54,6 +56,27 @@ struct BvhView {
     uint32_t max_depth;   // deepest leaf, in nodes: bounds the traversal stack
     const float* leaves;  // leaf blocks
     uint32_t leaf_rows;   // kMollerTrumboreRows or kWatertightRows, as the scene's triangle test
+    // The scene's instances (two-level traversal, instance_traverse.h), or null: a scene
+    // without instances traces this tree alone, as before instances existed.
+    const InstanceView* instances = nullptr;
+};
+
+// One placement as the traversal reads it: world -> object (rows of the inverse's linear part
+// and translation), the mesh whose tree it enters, and the id of that mesh's triangle 0.
+struct InstanceRecord {
+    float to_object[3][4];
+    uint32_t mesh;
+    uint32_t first_id;
+};
+
+// The top level: a tree of the same node width over the instances' world boxes, whose leaves
+// index `records` (kept in leaf order) as the bottom level's index leaf blocks; and each mesh's
+// own tree, in object space, its leaf ids counted from 0.
+struct InstanceView {
+    const void* nodes;  // BvhNode<node_width>[]
+    uint32_t root;
+    const InstanceRecord* records;
+    const BvhView* meshes;
 };
 
 }  // namespace wt

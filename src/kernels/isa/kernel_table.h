@@ -6,6 +6,7 @@
 #include "kernels/accel/brute_force.h"
 #include "kernels/accel/bvh_packet_traverse.h"
 #include "kernels/accel/bvh_traverse.h"
+#include "kernels/accel/instance_traverse.h"
 #include "kernels/isa/intersect_kernels.h"
 
 namespace wt::packet {
@@ -19,10 +20,10 @@ constexpr IntersectKernels make_kernels(Isa isa) {
             &primpacket_brute_force<Query::closest, T, S, N>,
             &raypacket_brute_force<Query::any, T, S, N>,
             &primpacket_brute_force<Query::any, T, S, N>,
-            &bvh_query<Query::closest, T, S, N>,
-            &bvh_query<Query::any, T, S, N>,
-            &bvh_packet_query<Query::closest, T, S, N>,
-            &bvh_packet_query<Query::any, T, S, N>};
+            &scene_bvh_query<Query::closest, T, S, N, false>,
+            &scene_bvh_query<Query::any, T, S, N, false>,
+            &scene_bvh_query<Query::closest, T, S, N, true>,
+            &scene_bvh_query<Query::any, T, S, N, true>};
 }
 
 // One table entry per accuracy combination, in the order kernel_variant() indexes them:
