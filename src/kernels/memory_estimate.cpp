@@ -49,6 +49,13 @@ double geometry_bytes(const Scene& scene) {
            double(scene.spheres.size()) * (4 * sizeof(float) + sizeof(uint32_t));
 }
 
+// The textures' mip pyramids and the coordinates they are looked up at: 0 without textures.
+double texture_bytes(const Scene& scene) {
+    double bytes = double(scene.texture_coordinates.bytes());
+    for (const MipPyramid& t : scene.textures) bytes += double(t.bytes());
+    return bytes;
+}
+
 }  // namespace
 
 MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& options) {
@@ -66,6 +73,7 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
     const int lanes = intersect_kernels(options.isa.value_or(best_supported_isa()), s.accuracy).width;
     if (resolve_accel(options.accel, scene.primitive_count(), lanes) == Accel::bvh) e.bvh = bvh_bytes(scene, options);
     e.geometry = geometry_bytes(scene);
+    e.textures = texture_bytes(scene);
     return e;
 }
 
@@ -94,8 +102,9 @@ std::string memory_problem(const MemoryEstimate& e, double available) {
     std::ostringstream msg;
     msg << "the render needs about " << format_bytes(e.total()) << " (film " << format_bytes(e.film) << ", "
         << e.workers << " worker" << (e.workers > 1 ? "s" : "") << " x " << format_bytes(e.queues_per_worker)
-        << " of wavefront queues, BVH " << format_bytes(e.bvh) << ", geometry " << format_bytes(e.geometry)
-        << "), more than the " << format_bytes(available) << " of memory available; ";
+        << " of wavefront queues, BVH " << format_bytes(e.bvh) << ", geometry " << format_bytes(e.geometry);
+    if (e.textures > 0.0) msg << ", textures " << format_bytes(e.textures);
+    msg << "), more than the " << format_bytes(available) << " of memory available; ";
     // Name what dominates.
     if (e.queues() >= e.film && e.queues() >= e.bvh)
         msg << "lower --shadow-rays, --tile-size or --batch-paths, or use fewer --threads";

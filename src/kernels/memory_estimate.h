@@ -23,11 +23,12 @@ struct MemoryEstimate {
     int workers = 1;
     double bvh = 0.0;               // nodes, leaf blocks and the build's temporaries at their peak
     double geometry = 0.0;          // the scene's primitive arrays (already allocated when this is asked)
+    double textures = 0.0;          // the textures' mip pyramids and coordinates (allocated, as geometry)
 
     double queues() const { return queues_per_worker * double(workers); }
     // What the render has yet to allocate.
     double to_allocate() const { return film + queues() + bvh; }
-    double total() const { return to_allocate() + geometry; }
+    double total() const { return to_allocate() + geometry + textures; }
 };
 
 // For the options' threads (0: one per hardware thread), integrator, kernels and accel.

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/float_minmax.h"
+#include "core/material_at_hit.h"
 #include "core/materials/bsdf.h"
 #include "core/materials/shading_normal_bsdf.h"
 #include "core/path_vertex.h"
@@ -90,7 +91,8 @@ LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const Ligh
     const RenderSettings& settings = scene_.settings;
     const Ray& ray = at.ray;
     const SurfacePoint surface = surface_at(scene_, ray, hit);
-    const Material& m = scene_.materials[surface.material];
+    std::optional<Material> textured;
+    const Material& m = material_at(scene_, hit, surface, ray, false, textured);
     LightVertex out;
     if (!m.is_specular()) {
         // A diffuse first bounce is direct light: the camera paths' light samples estimate it.

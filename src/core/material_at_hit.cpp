@@ -1,0 +1,44 @@
+#include "core/material_at_hit.h"
+
+#include <cmath>
+
+#include "core/sampling/sampling.h"
+#include "core/textures/texture_lookup.h"
+
+namespace wt {
+
+namespace {
+
+// A sphere's coordinates: longitude about +y for u, the polar angle from +y for v (v = 0 at
+// the top), as an equirectangular map wraps it.
+glm::vec2 sphere_coordinates(const glm::vec3& n) {
+    const float u = 0.5f + std::atan2(n.x, -n.z) * (0.5f * kInvPi);
+    const float v = std::acos(n.y < -1.0f ? -1.0f : (n.y > 1.0f ? 1.0f : n.y)) * kInvPi;
+    return {u, v};
+}
+
+}  // namespace
+
+void apply_textures(const Scene& scene, const Hit& hit, const SurfacePoint& surface, const Ray& ray, bool from_camera,
+                    Material& textured) {
+    const bool triangle = hit.prim < scene.triangles.size();
+    const glm::vec2 uv = triangle ? scene.texture_coordinates.at(hit.prim, hit.u, hit.v) : sphere_coordinates(surface.normal);
+    // Level of detail of a ray cone (Akenine-Moller et al. 2019, eq. 34): the triangle's texel
+    // density plus log2 of the cone's width over the cosine of its incidence, plus the
+    // texture's own term (added per texture below). Spheres and non-camera rays read level 0.
+    float lod = -INFINITY;
+    if (from_camera && triangle) {
+        const float width = scene.cone_width0 + scene.cone_spread * hit.t;
+        const float cosine = std::fabs(glm::dot(ray.direction, surface.normal));
+        lod = scene.texture_coordinates.log2_density(hit.prim) + std::log2(width / cosine);
+    }
+    if (textured.color_texture >= 0) {
+        const MipPyramid& t = scene.textures[std::size_t(textured.color_texture)];
+        const glm::vec4 c = texture_lookup(t, uv, lod + t.log2_texel_scale());
+        const glm::vec3 rgb(c.x, c.y, c.z);
+        if (textured.type == MaterialType::principled) textured.base_color *= rgb;
+        else textured.albedo *= rgb;
+    }
+}
+
+}  // namespace wt
