@@ -152,6 +152,26 @@ TEST(TextureLookup, TexelsClampedToUnitAndNanToZero) {
     EXPECT_EQ(t.level(0).at(1, 0), glm::vec4(0.25f));
 }
 
+TEST(TextureLookup, TransformIsTranslateRotateScale) {
+    // KHR_texture_transform: uv' = T R S uv with R = [cos sin; -sin cos].
+    TextureImage image = ramp(4, 4);
+    image.scale = glm::vec2(2.0f, 1.0f);
+    image.rotation = 1.5707963267948966f;
+    image.offset = glm::vec2(0.5f, 0.0f);
+    const MipPyramid t(image);
+    // S (0.25, 0.5) = (0.5, 0.5); R turns it to (0.5, -0.5); T moves it to (1, -0.5).
+    const glm::vec2 uv = t.transformed({0.25f, 0.5f});
+    EXPECT_NEAR(uv.x, 1.0f, 1e-6f);
+    EXPECT_NEAR(uv.y, -0.5f, 1e-6f);
+    // Twice the texels per unit of u: half a level more detail needed.
+    EXPECT_FLOAT_EQ(t.log2_texel_scale(), 0.5f * std::log2(16.0f) + 0.5f);
+    // Without a transform the coordinates are the same bits.
+    const MipPyramid plain(ramp(4, 4));
+    const glm::vec2 odd(0.123456f, -7.654321f);
+    EXPECT_EQ(plain.transformed(odd), odd);
+    EXPECT_EQ(plain.log2_texel_scale(), 2.0f);
+}
+
 TEST(TextureCoordinates, InterpolatedAndTheirDensity) {
     TextureCoordinateTable table;
     // A right triangle of area 2 in the world mapped onto half the unit square (uv area 0.5).

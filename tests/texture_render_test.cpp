@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/materials/microfacet_material.h"
+#include "kernels/memory_estimate.h"
 #include "lights_test_scenes.h"
 #include "render_helpers.h"
 #include "statistics.h"
@@ -55,6 +57,27 @@ TEST(TextureRender, UniformTextureIsTheBitsOfItsValue) {
         EXPECT_TRUE(expected == test::render_film(textured, Integrator::wavefront).film);
         EXPECT_TRUE(expected == test::render_film(textured, Integrator::reference).film);
     }
+}
+
+TEST(TextureRender, MetallicRoughnessTextureIsTheBitsOfItsValues) {
+    // Principled spheres in the hexroom with metallic and roughness 1 times a constant texture of
+    // green 0.5 and blue 0.25 (glTF's channels for them): the bits of metallic 0.25, roughness 0.5.
+    SceneDescription plain = test::hexroom(24, 16, 4);
+    const uint32_t first = uint32_t(plain.materials.size());
+    plain.materials.push_back(principled_material(glm::vec3(0.9f, 0.6f, 0.3f), 0.25f, 0.5f, 1.5f, glm::vec3(0.0f)));
+    plain.materials.push_back(principled_material(glm::vec3(0.2f, 0.4f, 0.8f), 0.25f, 0.5f, 1.5f, glm::vec3(0.0f)));
+    for (std::size_t i = 0; i < plain.spheres.size(); ++i) plain.spheres[i].material = first + uint32_t(i % 2);
+    SceneDescription textured = plain;
+    textured.textures.push_back(texture_of(2, 2, [](int, int) { return glm::vec4(0.0f, 0.5f, 0.25f, 1.0f); }));
+    for (uint32_t k = first; k < first + 2; ++k) {
+        Material& m = textured.materials[k];
+        ASSERT_EQ(m.type, MaterialType::principled);
+        m.metallic = m.roughness = 1.0f;
+        m.metallic_roughness_texture = 0;
+    }
+    const Film expected = test::render_film(plain, Integrator::wavefront).film;
+    EXPECT_TRUE(expected == test::render_film(textured, Integrator::wavefront).film);
+    EXPECT_TRUE(expected == test::render_film(textured, Integrator::reference).film);
 }
 
 // A square of side `side` in the z = 0 plane facing +z, its coordinates spanning [0, 1]^2
@@ -133,6 +156,27 @@ TEST(TextureRender, HalfBlackHalfWhiteGivesEachHalfItsRadiance) {
     for (double w : white) square += (w - mean) * (w - mean) / double(white.size() - 1);
     EXPECT_NEAR(mean, 1.0, 5.0 * std::sqrt(square / double(white.size())) + 1e-3);
     EXPECT_GT(mean, 0.5);
+}
+
+TEST(TextureRender, MemoryEstimateCountsTheTextures) {
+    const SceneDescription d = textured_square(8.0f, 10.0f, checkerboard(64));
+    const Scene scene = build_scene(d);
+    const MemoryEstimate e = estimate_render_memory(scene, RenderOptions{});
+    // 64^2 + 32^2 + ... + 1 texels of 16 bytes, and the two triangles' coordinates.
+    std::size_t texels = 0;
+    for (int side = 64; side >= 1; side /= 2) texels += std::size_t(side) * std::size_t(side);
+    EXPECT_EQ(scene.textures[0].bytes(), texels * 16);
+    EXPECT_EQ(e.textures, double(texels * 16 + scene.texture_coordinates.bytes()));
+    EXPECT_GE(scene.texture_coordinates.bytes(), 2u * 7u * sizeof(float));
+    EXPECT_GE(e.total(), e.to_allocate() + e.geometry + e.textures);
+    EXPECT_NE(texture_memory_line(scene).find("textures: 1 image, "), std::string::npos) << texture_memory_line(scene);
+    // Without a textured material neither the levels nor the coordinates exist.
+    SceneDescription grey = d;
+    grey.materials[0].color_texture = -1;
+    const Scene untextured = build_scene(grey);
+    EXPECT_FALSE(untextured.has_textures());
+    EXPECT_TRUE(untextured.texture_coordinates.empty());
+    EXPECT_EQ(estimate_render_memory(untextured, RenderOptions{}).textures, 0.0);
 }
 
 }  // namespace

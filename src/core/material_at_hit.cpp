@@ -32,12 +32,23 @@ void apply_textures(const Scene& scene, const Hit& hit, const SurfacePoint& surf
         const float cosine = std::fabs(glm::dot(ray.direction, surface.normal));
         lod = scene.texture_coordinates.log2_density(hit.prim) + std::log2(width / cosine);
     }
+    const auto lookup = [&](int32_t texture) {
+        const MipPyramid& t = scene.textures[std::size_t(texture)];
+        return texture_lookup(t, t.transformed(uv), lod + t.log2_texel_scale());
+    };
     if (textured.color_texture >= 0) {
-        const MipPyramid& t = scene.textures[std::size_t(textured.color_texture)];
-        const glm::vec4 c = texture_lookup(t, uv, lod + t.log2_texel_scale());
+        const glm::vec4 c = lookup(textured.color_texture);
         const glm::vec3 rgb(c.x, c.y, c.z);
+        // The colour each type has: a principled material's base colour, a metal's F0 (glTF's
+        // metallic 1 loads as one, its base colour as F0), else the diffuse albedo.
         if (textured.type == MaterialType::principled) textured.base_color *= rgb;
+        else if (textured.type == MaterialType::conductor || textured.type == MaterialType::rough_conductor) textured.f0 *= rgb;
         else textured.albedo *= rgb;
+    }
+    if (textured.metallic_roughness_texture >= 0) {
+        const glm::vec4 c = lookup(textured.metallic_roughness_texture);
+        textured.roughness *= c.y;
+        textured.metallic *= c.z;
     }
 }
 

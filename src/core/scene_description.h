@@ -50,11 +50,14 @@ struct Material {
     // materials' light sampler and the photons read that, and this lobe is not theirs.
     glm::vec3 base_color{0.0f};   // glTF's baseColorFactor, in [0, 1]
     float metallic = 0.0f;        // glTF's metallicFactor, in [0, 1]
-    // Index into SceneDescription::textures, or -1: multiplies albedo (diffuse materials) or
-    // base_color (principled) at each hit (core/material_at_hit.h).
+    // Index into SceneDescription::textures, or -1: multiplies albedo (diffuse materials),
+    // base_color (principled) or f0 (conductors) at each hit (core/material_at_hit.h).
     int32_t color_texture = -1;
+    // principled only: glTF's metallicRoughnessTexture, its blue channel multiplying metallic
+    // and its green one roughness (linear data, not colour).
+    int32_t metallic_roughness_texture = -1;
 
-    bool has_textures() const { return color_texture >= 0; }
+    bool has_textures() const { return color_texture >= 0 || metallic_roughness_texture >= 0; }
     bool is_emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
     bool is_specular() const { return type >= MaterialType::mirror && type <= MaterialType::conductor; }
     // A GGX lobe: neither diffuse nor specular (light samples and BSDF samples, never connected

@@ -61,7 +61,7 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         // Only the types that read them: the other materials keep the hashes they had.
         if (m.type >= MaterialType::conductor) h.value(m.roughness), h.value(m.f0), h.value(m.eta), h.value(m.k);
         if (m.type == MaterialType::principled) h.value(m.base_color), h.value(m.metallic);
-        if (m.has_textures()) h.value(m.color_texture);
+        if (m.has_textures()) h.value(m.color_texture), h.value(m.metallic_roughness_texture);
     }
     h.word(d.meshes.size());
     for (const TriangleMesh& mesh : d.meshes) {
@@ -74,7 +74,7 @@ uint64_t scene_content_hash(const SceneDescription& d) {
     if (!d.textures.empty()) {
         h.word(d.textures.size());
         for (const TextureImage& t : d.textures) {
-            h.value(t.srgb), h.value(t.wrap_s), h.value(t.wrap_t);
+            h.value(t.srgb), h.value(t.wrap_s), h.value(t.wrap_t), h.value(t.offset), h.value(t.scale), h.value(t.rotation);
             h.word(uint64_t(t.texels->width)), h.word(uint64_t(t.texels->height)), h.array(t.texels->rgba);
         }
     }

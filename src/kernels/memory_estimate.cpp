@@ -97,6 +97,11 @@ std::string format_bytes(double bytes) {
     return text;
 }
 
+std::string texture_memory_line(const Scene& scene) {
+    return "textures: " + std::to_string(scene.textures.size()) + (scene.textures.size() == 1 ? " image, " : " images, ") +
+           format_bytes(texture_bytes(scene)) + " (mip levels of linear RGBA floats, and their coordinates)";
+}
+
 std::string memory_problem(const MemoryEstimate& e, double available) {
     if (available <= 0.0 || e.to_allocate() <= available) return {};
     std::ostringstream msg;

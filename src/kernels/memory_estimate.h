@@ -43,6 +43,9 @@ double available_memory_bytes();
 // Empty when it fits (or nothing is known of the memory available).
 std::string memory_problem(const MemoryEstimate& estimate, double available);
 
+// "textures: 3 images, 5.6 MB (mip levels of linear RGBA floats, and their coordinates)"
+std::string texture_memory_line(const Scene& scene);
+
 // "12.3 MB" and the like, for messages.
 std::string format_bytes(double bytes);
 

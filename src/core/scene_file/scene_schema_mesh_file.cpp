@@ -35,9 +35,13 @@ std::vector<uint32_t> add_file_materials(const ImportedMesh& mesh, const std::st
         scene.materials.push_back(m);
         return uint32_t(scene.materials.size() - 1);
     };
+    // The file's textures follow the scene's; its materials' indices move with them.
+    const int32_t first_texture = int32_t(scene.textures.size());
+    scene.textures.insert(scene.textures.end(), mesh.textures.begin(), mesh.textures.end());
     std::vector<uint32_t> ours;
     for (std::size_t i = 0; i < mesh.materials.size(); ++i) {
         Material m = mesh.materials[i].material;
+        if (m.color_texture >= 0) m.color_texture += first_texture;
         const std::string file_name = m.name.empty() ? "material " + std::to_string(i) : m.name;
         m.name = file + "/" + file_name;
         ours.push_back(index_of(m));
@@ -54,8 +58,10 @@ std::vector<uint32_t> add_file_materials(const ImportedMesh& mesh, const std::st
 }
 
 // One TriangleMesh per material, in the order the materials first appear, each with only the
-// vertices its triangles use, in the file's order.
-void split_by_material(const ImportedMesh& mesh, const std::vector<uint32_t>& ours, std::vector<TriangleMesh>& out) {
+// vertices its triangles use, in the file's order; texture coordinates only where the material
+// has a texture.
+void split_by_material(const ImportedMesh& mesh, const std::vector<uint32_t>& ours, const std::vector<Material>& materials,
+                       std::vector<TriangleMesh>& out) {
     const uint32_t none = uint32_t(ours.size() - 1);
     const auto group_of = [&](std::size_t t) {
         const uint32_t m = mesh.triangle_materials.empty() ? ImportedMesh::kNoMaterial : mesh.triangle_materials[t];
@@ -80,10 +86,12 @@ void split_by_material(const ImportedMesh& mesh, const std::vector<uint32_t>& ou
         std::sort(used.begin(), used.end());
         TriangleMesh part;
         part.material = ours[g];
+        const bool uvs = !mesh.uvs.empty() && materials[part.material].has_textures();
         for (uint32_t v : used) {
             remap[v] = uint32_t(part.vertices.size());
             part.vertices.push_back(mesh.positions[v]);
             if (!mesh.normals.empty()) part.normals.push_back(mesh.normals[v]);
+            if (uvs) part.uvs.push_back(mesh.uvs[v]);
         }
         for (uint32_t t : triangles_of[g]) {
             const auto& tri = mesh.triangles[t];
@@ -117,7 +125,7 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
 
     ImportedMesh mesh;
     try {
-        mesh = read_mesh_file(resolved);
+        mesh = read_mesh_file(resolved, MeshFileUse{from_file, !from_file && scene.materials[scene_material].has_textures()});
     } catch (const MeshFileError& e) {
         in.fail(file_path, e.what());
     }
@@ -137,12 +145,13 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
         std::vector<std::string> unmapped;
         const std::vector<uint32_t> ours = add_file_materials(mesh, file, scene, names, unmapped);
         if (!unmapped.empty()) scene.notes.push_back(note + "not mapped from its materials: " + join(unmapped));
-        split_by_material(mesh, ours, scene.meshes);
+        split_by_material(mesh, ours, scene.materials, scene.meshes);
     } else {
         TriangleMesh whole;
         whole.vertices = std::move(mesh.positions);
         whole.triangles = std::move(mesh.triangles);
         whole.normals = std::move(mesh.normals);
+        if (scene.materials[scene_material].has_textures()) whole.uvs = std::move(mesh.uvs);
         whole.material = scene_material;
         scene.meshes.push_back(std::move(whole));
     }

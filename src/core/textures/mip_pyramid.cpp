@@ -69,6 +69,16 @@ MipPyramid::MipPyramid(const TextureImage& image)
         if (image.srgb) t = glm::vec4(srgb_to_linear(t.x), srgb_to_linear(t.y), srgb_to_linear(t.z), t.w);
     }
     log2_texel_scale_ = 0.5f * std::log2(float(base.width) * float(base.height));
+    if (image.offset != glm::vec2(0.0f) || image.scale != glm::vec2(1.0f) || image.rotation != 0.0f) {
+        // T R S with R = [cos sin; -sin cos] (KHR_texture_transform's matrices).
+        const float c = std::cos(image.rotation), s = std::sin(image.rotation);
+        transformed_ = true;
+        row0_ = glm::vec3(c * image.scale.x, s * image.scale.y, image.offset.x);
+        row1_ = glm::vec3(-s * image.scale.x, c * image.scale.y, image.offset.y);
+        // A scaled map packs more texels into each unit of the coordinates it is given.
+        const float det = std::fabs(image.scale.x * image.scale.y);
+        if (det > 0.0f && std::isfinite(det)) log2_texel_scale_ += 0.5f * std::log2(det);
+    }
     levels_.push_back(std::move(base));
     while (levels_.back().width > 1 || levels_.back().height > 1) levels_.push_back(box_downsample(levels_.back()));
 }

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "core/textures/texture_image.h"
@@ -36,8 +38,15 @@ public:
     const MipLevel& level(std::size_t i) const { return levels_[i]; }
     TextureWrap wrap_s() const { return wrap_s_; }
     TextureWrap wrap_t() const { return wrap_t_; }
-    // 0.5 log2(width * height) of level 0: the texture's term of the ray cone's level of detail.
+    // 0.5 log2(width * height) of level 0, plus the transform's 0.5 log2 |det|: the texture's
+    // term of the ray cone's level of detail.
     float log2_texel_scale() const { return log2_texel_scale_; }
+    // A hit's coordinates through the texture's transform (TextureImage::offset, ...); the same
+    // bits without one.
+    glm::vec2 transformed(glm::vec2 uv) const {
+        if (!transformed_) return uv;
+        return {row0_.x * uv.x + row0_.y * uv.y + row0_.z, row1_.x * uv.x + row1_.y * uv.y + row1_.z};
+    }
     std::size_t bytes() const;
 
 private:
@@ -45,6 +54,8 @@ private:
     std::vector<MipLevel> levels_;
     TextureWrap wrap_s_ = TextureWrap::repeat, wrap_t_ = TextureWrap::repeat;
     float log2_texel_scale_ = 0.0f;
+    bool transformed_ = false;
+    glm::vec3 row0_{1.0f, 0.0f, 0.0f}, row1_{0.0f, 1.0f, 0.0f};  // the affine map's two rows
 };
 
 }  // namespace wt

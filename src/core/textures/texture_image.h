@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include "core/textures/texture_wrap.h"
@@ -26,6 +27,10 @@ struct TextureImage {
     std::shared_ptr<const TextureTexels> texels;
     bool srgb = true;  // colour: RGB decoded from sRGB (alpha is always linear)
     TextureWrap wrap_s = TextureWrap::repeat, wrap_t = TextureWrap::repeat;
+    // KHR_texture_transform: uv' = translate(offset) rotate(rotation) scale(scale) uv, the
+    // rotation (radians) turning (1, 0) towards (0, -1) as the extension defines it.
+    glm::vec2 offset{0.0f}, scale{1.0f};
+    float rotation = 0.0f;
 };
 
 }  // namespace wt
