@@ -11,6 +11,7 @@
 
 #include "core/film/image_output.h"
 #include "core/scene_file/scene_error.h"
+#include "core/textures/texture_file.h"
 #include "import_gltf_files.h"
 #include "lights_test_scenes.h"
 #include "render_helpers.h"
@@ -246,6 +247,10 @@ TEST_F(TextureImport, SceneFileAlbedoTextureOnAQuad) {
     const SceneDescription d = load(quad, R"({"panel": {"type": "lambertian", "albedo": {"texture": "texture.png", "wrap": "clamp"}}})");
     ASSERT_EQ(d.textures.size(), 1u);
     EXPECT_EQ(d.textures[0].wrap_s, TextureWrap::clamp);
+    EXPECT_TRUE(d.textures[0].srgb);  // a PNG; an EXR's values are linear
+    EXPECT_FALSE(colour_file_is_srgb("wood.EXR"));
+    EXPECT_FALSE(colour_file_is_srgb("sky.hdr"));
+    EXPECT_TRUE(colour_file_is_srgb("wood.jpg"));
     EXPECT_EQ(d.materials[0].albedo, glm::vec3(1.0f));  // no factor: white
     EXPECT_EQ(d.meshes[0].uvs.size(), 4u);
     expect_halves_render_as_their_colours(d);

@@ -10,6 +10,7 @@
 #include "core/textures/srgb.h"
 #include "core/textures/texture_coordinates.h"
 #include "core/textures/texture_lookup.h"
+#include "texture_test_images.h"
 
 namespace wt {
 namespace {
@@ -17,16 +18,8 @@ namespace {
 // A data (linear) texture whose texel (x, y) has red x + 10 y, green 1, blue y, alpha 0.5:
 // values stored as given, so the expectations below are the formula's.
 TextureImage ramp(int width, int height, TextureWrap wrap = TextureWrap::repeat, bool srgb = false) {
-    auto texels = std::make_shared<TextureTexels>();
-    texels->width = width, texels->height = height;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) texels->rgba.push_back(glm::vec4(0.01f * float(x + 10 * y), 1.0f, 0.1f * float(y), 0.5f));
-    TextureImage image;
-    image.name = "ramp";
-    image.texels = texels;
-    image.srgb = srgb;
-    image.wrap_s = image.wrap_t = wrap;
-    return image;
+    return test::texture_of(
+        width, height, [](int x, int y) { return glm::vec4(0.01f * float(x + 10 * y), 1.0f, 0.1f * float(y), 0.5f); }, wrap, srgb);
 }
 
 float red(int x, int y) { return 0.01f * float(x + 10 * y); }

@@ -16,24 +16,12 @@
 #include "render_helpers.h"
 #include "statistics.h"
 #include "test_scenes.h"
+#include "texture_test_images.h"
 
 namespace wt {
 namespace {
 
-// A data texture (stored values are linear) of width x height texels from texel(x, y).
-template <typename F>
-TextureImage texture_of(int width, int height, F texel, TextureWrap wrap = TextureWrap::repeat) {
-    auto texels = std::make_shared<TextureTexels>();
-    texels->width = width, texels->height = height;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) texels->rgba.push_back(texel(x, y));
-    TextureImage image;
-    image.name = "generated";
-    image.texels = texels;
-    image.srgb = false;
-    image.wrap_s = image.wrap_t = wrap;
-    return image;
-}
+using test::texture_of;
 
 TEST(TextureRender, UniformTextureIsTheBitsOfItsValue) {
     // The hexroom with every diffuse albedo doubled and a constant 0.5 texture on it: the

@@ -123,6 +123,17 @@ private:
         return index;
     }
 
+    // A corner's normal or texture coordinate index, which must name one defined above it; -1
+    // for none (an empty word). `defined_so_far` ends the message.
+    int32_t defined_index(std::string_view word, std::size_t defined, const char* what, const char* defined_so_far) const {
+        if (word.empty()) return -1;
+        const int64_t i = resolve(word, defined, what);
+        if (uint64_t(i) >= defined)
+            fail(std::string(what) + " index " + std::string(word) + " out of range (" + std::to_string(defined) + " " +
+                 defined_so_far + ")");
+        return int32_t(i);
+    }
+
     // Corners v, v/vt, v/vt/vn or v//vn.
     void face(TextWords& words) {
         polygon_.clear();
@@ -145,22 +156,8 @@ private:
             const int64_t vertex = resolve(v, mesh_.positions.size(), "vertex");
             // Positive indices may name vertices defined further down; checked at the end.
             if (uint64_t(vertex) >= mesh_.positions.size()) forward_references_.push_back({line_, vertex + 1});
-            int32_t uv = -1;
-            if (!vt.empty()) {
-                const int64_t t = resolve(vt, file_uvs_.size(), "texture coordinate");
-                if (uint64_t(t) >= file_uvs_.size())
-                    fail("texture coordinate index " + std::string(vt) + " out of range (" + std::to_string(file_uvs_.size()) +
-                         " defined so far)");
-                uv = int32_t(t);
-            }
-            int32_t normal = -1;
-            if (!vn.empty()) {
-                const int64_t n = resolve(vn, file_normals_.size(), "normal");
-                if (uint64_t(n) >= file_normals_.size())
-                    fail("normal index " + std::string(vn) + " out of range (" + std::to_string(file_normals_.size()) +
-                         " normals defined so far)");
-                normal = int32_t(n);
-            }
+            const int32_t uv = defined_index(vt, file_uvs_.size(), "texture coordinate", "defined so far");
+            const int32_t normal = defined_index(vn, file_normals_.size(), "normal", "normals defined so far");
             polygon_.push_back(uint32_t(vertex));
             polygon_normals_.push_back(normal);
             polygon_uvs_.push_back(uv);

@@ -47,6 +47,7 @@ int ObjTextures::add_color(const std::string& file) {
     if (const auto it = index_of_.find(resolved); it != index_of_.end()) return it->second;
     TextureImage image;
     image.name = resolved;
+    image.srgb = colour_file_is_srgb(resolved);
     image.texels = read_texture_file(resolved);
     out_.push_back(std::move(image));
     return index_of_[resolved] = int(out_.size() - 1);

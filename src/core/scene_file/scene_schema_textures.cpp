@@ -33,6 +33,7 @@ glm::vec3 read_color_or_texture(const Reader& in, const Json& j, const std::stri
         relative.is_absolute() ? file : (std::filesystem::path(in.source()).parent_path() / relative).string();
     TextureImage image;
     image.name = resolved;
+    image.srgb = colour_file_is_srgb(resolved);
     try {
         image.texels = read_texture_file(resolved);
     } catch (const ImageError& e) {

@@ -1,5 +1,8 @@
 #include "core/textures/texture_file.h"
 
+#include <cctype>
+#include <filesystem>
+
 namespace wt {
 
 std::shared_ptr<const TextureTexels> texels_of(const ImageData& image) {
@@ -19,6 +22,12 @@ std::shared_ptr<const TextureTexels> texels_of(const ImageData& image) {
 
 std::shared_ptr<const TextureTexels> read_texture_file(const std::string& path) {
     return texels_of(read_image(path, ImageLimits{kMaxTexturePixels, kMaxTextureSide}));
+}
+
+bool colour_file_is_srgb(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext != ".exr" && ext != ".hdr";
 }
 
 std::shared_ptr<const TextureTexels> read_texture_bytes(const std::string& name, const void* bytes, std::size_t size) {

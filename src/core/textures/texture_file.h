@@ -21,6 +21,9 @@ constexpr std::size_t kMaxTexturePixels = std::size_t(8192) * 8192;
 std::shared_ptr<const TextureTexels> texels_of(const ImageData& image);
 
 std::shared_ptr<const TextureTexels> read_texture_file(const std::string& path);
+// Whether a colour texture file's values are sRGB-encoded: all but the float formats, EXR and
+// HDR (by the extension, any case), whose values are linear already.
+bool colour_file_is_srgb(const std::string& path);
 std::shared_ptr<const TextureTexels> read_texture_bytes(const std::string& name, const void* bytes, std::size_t size);
 
 }  // namespace wt

@@ -87,11 +87,11 @@ std::optional<LightRay> LightPathTracer::start(uint64_t key) const {
 
 // `vertex` counts the surfaces the path has hit, this one included: a camera path that ends in
 // this light path meets the light after as many vertices of its own.
-LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit) const {
+LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit,
+                                       std::optional<Material>& textured) const {
     const RenderSettings& settings = scene_.settings;
     const Ray& ray = at.ray;
     const SurfacePoint surface = surface_at(scene_, ray, hit);
-    std::optional<Material> textured;
     const Material& m = material_at(scene_, hit, surface, ray, false, textured);
     LightVertex out;
     if (!m.is_specular()) {
@@ -130,11 +130,12 @@ void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, 
     const uint64_t key = light_path_key(scene_.settings.seed, index, sample);
     std::optional<LightRay> ray = start(key);
     ++counts.light_paths;
+    std::optional<Material> textured;
     for (uint32_t vertex = 1; ray; ++vertex) {
         ++counts.light_rays;
         const Hit hit = closest(ray->ray);
         if (!hit.found()) return;
-        const LightVertex v = at_vertex(key, vertex, *ray, hit);
+        const LightVertex v = at_vertex(key, vertex, *ray, hit, textured);
         bool was_blocked = false;
         if (v.connection) {
             ++counts.camera_connections;
