@@ -142,11 +142,12 @@ TEST_F(TextureImport, MetallicRoughnessTextureAndTextureTransform) {
     Json& pbr = j["materials"][0]["pbrMetallicRoughness"];
     pbr["metallicFactor"] = 1.0;  // would load as a conductor without the texture
     pbr["metallicRoughnessTexture"] = {{"index", 1}};
+    j["materials"][0]["normalTexture"] = {{"index", 1}, {"scale", 0.5}};
     pbr["baseColorTexture"]["extensions"] = {
         {"KHR_texture_transform", {{"offset", {0.25, 0.5}}, {"rotation", 0.5}, {"scale", {2.0, 3.0}}}}};
     write("panel.glb", test::glb(j.dump(), file.bin()));
     const SceneDescription d = load_from_file("panel.glb");
-    ASSERT_EQ(d.textures.size(), 2u);
+    ASSERT_EQ(d.textures.size(), 3u);
     const Material* panel = nullptr;
     for (const Material& m : d.materials)
         if (m.name.find("panel") != std::string::npos) panel = &m;
@@ -164,9 +165,13 @@ TEST_F(TextureImport, MetallicRoughnessTextureAndTextureTransform) {
     EXPECT_EQ(colour.scale, glm::vec2(2.0f, 3.0f));
     EXPECT_EQ(colour.rotation, 0.5f);
     EXPECT_EQ(data.scale, glm::vec2(1.0f));
+    ASSERT_GE(panel->normal_texture, 0);  // a normal map: data, with its scale
+    EXPECT_FALSE(d.textures[std::size_t(panel->normal_texture)].srgb);
+    EXPECT_EQ(panel->normal_scale, 0.5f);
     for (const std::string& note : d.notes) {
         EXPECT_EQ(note.find("metallicRoughnessTexture"), std::string::npos) << note;
         EXPECT_EQ(note.find("KHR_texture_transform"), std::string::npos) << note;
+        EXPECT_EQ(note.find("normalTexture"), std::string::npos) << note;
     }
     // A transform whose values are not numbers names them.
     pbr["baseColorTexture"]["extensions"]["KHR_texture_transform"]["scale"] = {"big", 1};

@@ -146,6 +146,37 @@ TEST(TextureRender, HalfBlackHalfWhiteGivesEachHalfItsRadiance) {
     EXPECT_GT(mean, 0.5);
 }
 
+TEST(TextureRender, FlatNormalMapIsNoNormalMapAndATiltedOneShades) {
+    // A flat texel (0.5, 0.5, 1): the same bits as the square without a normal map.
+    SceneDescription plain = textured_square(8.0f, 2.0f, checkerboard(64));
+    SceneDescription flat = plain;
+    flat.textures.push_back(texture_of(2, 2, [](int, int) { return glm::vec4(0.5f, 0.5f, 1.0f, 1.0f); }));
+    flat.materials[0].normal_texture = 1;
+    const Film expected = test::render_film(plain, Integrator::wavefront).film;
+    EXPECT_TRUE(expected == test::render_film(flat, Integrator::wavefront).film);
+    EXPECT_TRUE(expected == test::render_film(flat, Integrator::reference).film);
+    // Tilted by 45 degrees about the tangent: the image changes, is finite, and is the same bits
+    // for every schedule and both integrators.
+    SceneDescription tilted = flat;
+    tilted.textures[1] = texture_of(2, 2, [](int, int) { return glm::vec4(0.5f + 0.5f * 0.70710678f, 0.5f, 0.5f + 0.5f * 0.70710678f, 1.0f); });
+    const test::RenderedFilm rendered = test::render_film(tilted, Integrator::wavefront);
+    EXPECT_FALSE(expected == rendered.film);
+    EXPECT_EQ(rendered.result.counts.nonfinite_samples, 0u);
+    test::expect_same_film_for_any_schedule(tilted, rendered.film);
+}
+
+TEST(TextureCoordinates, TangentFrameFromTheCoordinates) {
+    // textured_square's triangles: u grows with +x, v with -y, so dP/du = +x / 8 units ... and
+    // glTF's bitangent, -dP/dv, is +y.
+    const Scene scene = build_scene(textured_square(8.0f, 2.0f, checkerboard(4)));
+    for (std::size_t i = 0; i < scene.texture_coordinates.size(); ++i) {
+        EXPECT_NEAR(scene.texture_coordinates.tangent(i).x, 8.0f, 1e-5f);
+        EXPECT_NEAR(scene.texture_coordinates.tangent(i).y, 0.0f, 1e-5f);
+        EXPECT_NEAR(scene.texture_coordinates.bitangent(i).y, 8.0f, 1e-5f);
+        EXPECT_NEAR(scene.texture_coordinates.bitangent(i).x, 0.0f, 1e-5f);
+    }
+}
+
 TEST(TextureRender, MemoryEstimateCountsTheTextures) {
     const SceneDescription d = textured_square(8.0f, 10.0f, checkerboard(64));
     const Scene scene = build_scene(d);

@@ -17,9 +17,33 @@ glm::vec2 sphere_coordinates(const glm::vec3& n) {
     return {u, v};
 }
 
+// The tangent-space normal (2 c - 1, x and y scaled) about the frame of the shading normal N and
+// the triangle's tangents made orthogonal to it (Gram-Schmidt), as glTF 2.0 (3.9.3) defines
+// normal maps. A flat texel (0.5, 0.5, 1) leaves the surface exactly as it was; so do a
+// degenerate frame and a normal that does not come out finite.
+void apply_normal_map(const Scene& scene, const Hit& hit, const glm::vec4& texel, const Material& m, SurfacePoint& surface) {
+    const float x = (2.0f * texel.x - 1.0f) * m.normal_scale, y = (2.0f * texel.y - 1.0f) * m.normal_scale;
+    const float z = 2.0f * texel.z - 1.0f;
+    if (x == 0.0f && y == 0.0f && z > 0.0f) return;
+    const glm::vec3& n = surface.shading_normal;
+    const glm::vec3 t = scene.texture_coordinates.tangent(hit.prim);
+    const glm::vec3 t_perpendicular = t - glm::dot(t, n) * n;
+    const float t_length = glm::length(t_perpendicular);
+    if (!(t_length > 0.0f)) return;
+    const glm::vec3 tangent = t_perpendicular / t_length;
+    // The bitangent's side from the triangle's own (a mirrored mapping flips it).
+    const glm::vec3 b = glm::cross(n, tangent);
+    const glm::vec3 bitangent = glm::dot(b, scene.texture_coordinates.bitangent(hit.prim)) < 0.0f ? -b : b;
+    const glm::vec3 mapped = x * tangent + y * bitangent + z * n;
+    const float length = glm::length(mapped);
+    if (!(length > 1e-6f) || !std::isfinite(length)) return;
+    surface.shading_normal = mapped / length;
+    surface.smooth = surface.shading_normal != surface.normal;
+}
+
 }  // namespace
 
-void apply_textures(const Scene& scene, const Hit& hit, const SurfacePoint& surface, const Ray& ray, bool from_camera,
+void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, const Ray& ray, bool from_camera,
                     Material& textured) {
     const bool triangle = hit.prim < scene.triangles.size();
     const glm::vec2 uv = triangle ? scene.texture_coordinates.at(hit.prim, hit.u, hit.v) : sphere_coordinates(surface.normal);
@@ -45,6 +69,7 @@ void apply_textures(const Scene& scene, const Hit& hit, const SurfacePoint& surf
         else if (textured.type == MaterialType::conductor || textured.type == MaterialType::rough_conductor) textured.f0 *= rgb;
         else textured.albedo *= rgb;
     }
+    if (textured.normal_texture >= 0 && triangle) apply_normal_map(scene, hit, lookup(textured.normal_texture), textured, surface);
     if (textured.metallic_roughness_texture >= 0) {
         const glm::vec4 c = lookup(textured.metallic_roughness_texture);
         textured.roughness *= c.y;

@@ -51,7 +51,9 @@ void push_texture_coordinates(TextureCoordinateTable& table, const TriangleMesh&
     const float area = 0.5f * glm::length(glm::cross(mesh.vertices[tri[1]] - mesh.vertices[tri[0]],
                                                      mesh.vertices[tri[2]] - mesh.vertices[tri[0]]));
     if (mesh.uvs.empty()) table.push({}, {}, {}, area);
-    else table.push(mesh.uvs[tri[0]], mesh.uvs[tri[1]], mesh.uvs[tri[2]], area);
+    else
+        table.push(mesh.uvs[tri[0]], mesh.uvs[tri[1]], mesh.uvs[tri[2]], area, mesh.vertices[tri[1]] - mesh.vertices[tri[0]],
+                   mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
 }
 
 // The ray cone of a camera ray (Akenine-Moller et al. 2019, section 20.3.4): a pinhole's spread

@@ -56,8 +56,13 @@ struct Material {
     // principled only: glTF's metallicRoughnessTexture, its blue channel multiplying metallic
     // and its green one roughness (linear data, not colour).
     int32_t metallic_roughness_texture = -1;
+    // A tangent-space normal map (glTF's normalTexture, linear data): RGB 2 c - 1 is the normal
+    // about the triangle's tangent frame (core/textures/texture_coordinates.h), x and y times
+    // normal_scale; it replaces the shading normal. Triangles with texture coordinates only.
+    int32_t normal_texture = -1;
+    float normal_scale = 1.0f;
 
-    bool has_textures() const { return color_texture >= 0 || metallic_roughness_texture >= 0; }
+    bool has_textures() const { return color_texture >= 0 || metallic_roughness_texture >= 0 || normal_texture >= 0; }
     bool is_emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
     bool is_specular() const { return type >= MaterialType::mirror && type <= MaterialType::conductor; }
     // A GGX lobe: neither diffuse nor specular (light samples and BSDF samples, never connected

@@ -61,7 +61,8 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         // Only the types that read them: the other materials keep the hashes they had.
         if (m.type >= MaterialType::conductor) h.value(m.roughness), h.value(m.f0), h.value(m.eta), h.value(m.k);
         if (m.type == MaterialType::principled) h.value(m.base_color), h.value(m.metallic);
-        if (m.has_textures()) h.value(m.color_texture), h.value(m.metallic_roughness_texture);
+        if (m.has_textures())
+            h.value(m.color_texture), h.value(m.metallic_roughness_texture), h.value(m.normal_texture), h.value(m.normal_scale);
     }
     h.word(d.meshes.size());
     for (const TriangleMesh& mesh : d.meshes) {

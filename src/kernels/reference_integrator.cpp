@@ -44,7 +44,7 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
                     radiance += escaped_radiance<E>(scene, ray.direction, throughput, bsdf_pdf, bounce);
             break;
         }
-        const SurfacePoint surface = surface_at(scene, ray, hit);
+        SurfacePoint surface = surface_at(scene, ray, hit);  // a normal map may change its shading normal
         const Material& m = material_at(scene, hit, surface, ray, bounce == 0, textured);
         if (first_surface && !first_surface->found)
             record_first_surface(*first_surface, scene.camera, bounce, ray, hit, surface, m, throughput);

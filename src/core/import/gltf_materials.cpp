@@ -1,5 +1,7 @@
 #include "core/import/gltf_materials.h"
 
+#include <cmath>
+
 #include <glm/common.hpp>
 
 #include "core/import/material_mapping.h"
@@ -85,7 +87,9 @@ ImportedMaterial map_gltf_material(const tinygltf::Material& m, const std::strin
     out.material.color_texture = map_texture(pbr.baseColorTexture, coloured, true, "baseColorTexture");
     out.material.metallic_roughness_texture =
         map_texture(mr_texture, type == MaterialType::principled, false, "metallicRoughnessTexture");
-    map_texture(m.normalTexture, false, false, "normalTexture");
+    // Normal maps perturb the shading normal, which every material type scatters about.
+    out.material.normal_texture = map_texture(m.normalTexture, true, false, "normalTexture");
+    out.material.normal_scale = std::isfinite(m.normalTexture.scale) ? float(m.normalTexture.scale) : 1.0f;
     map_texture(m.occlusionTexture, false, false, "occlusionTexture");
     map_texture(m.emissiveTexture, false, true, "emissiveTexture");
     return out;

@@ -91,7 +91,7 @@ LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const Ligh
                                        std::optional<Material>& textured) const {
     const RenderSettings& settings = scene_.settings;
     const Ray& ray = at.ray;
-    const SurfacePoint surface = surface_at(scene_, ray, hit);
+    SurfacePoint surface = surface_at(scene_, ray, hit);  // a normal map may change its shading normal
     const Material& m = material_at(scene_, hit, surface, ray, false, textured);
     LightVertex out;
     if (!m.is_specular()) {

@@ -51,7 +51,7 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         const uint32_t slot = rays.path[i];
         const PathSeed path{paths.key[slot], paths.sample[slot]};
         const glm::vec3 throughput = rays.throughput(i);
-        const SurfacePoint surface = surface_at(scene, ray, hit);
+        SurfacePoint surface = surface_at(scene, ray, hit);  // a normal map may change its shading normal
         // Textured scenes run the kRough loop (stage_shade.cpp): without it, the loop is as it was.
         const Material& m = kRough ? material_at(scene, hit, surface, ray, bounce == 0, textured)
                                    : scene.materials[surface.material];
