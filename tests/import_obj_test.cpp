@@ -86,7 +86,7 @@ TEST_F(ObjImport, NormalsOfOnlySomeFacesAreNotUsedAndSaySo) {
 }
 
 TEST_F(ObjImport, MtlMaterialsMapToOursWithFromFile) {
-    write("m.mtl", "newmtl red\nKd 0.8 0.1 0.1\nmap_Kd red.png\n"
+    write("m.mtl", "newmtl red\nKd 0.8 0.1 0.1\nmap_Ks red.png\n"
                    "newmtl glow\nKd 0 0 0\nKe 3 2 1\n"
                    "newmtl chrome\nillum 5\nKs 0.9 0.9 0.9\n"
                    "newmtl glass\nillum 7\nNi 1.33\n");
@@ -118,7 +118,7 @@ TEST_F(ObjImport, MtlMaterialsMapToOursWithFromFile) {
     // One line names what could not be mapped.
     ASSERT_EQ(scene.notes.size(), 1u);
     EXPECT_NE(scene.notes[0].find("not mapped"), std::string::npos) << scene.notes[0];
-    EXPECT_NE(scene.notes[0].find("red: map_Kd texture"), std::string::npos) << scene.notes[0];
+    EXPECT_NE(scene.notes[0].find("red: map_Ks texture"), std::string::npos) << scene.notes[0];
 }
 
 TEST_F(ObjImport, TheSceneMaterialOverridesTheFileMaterials) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "import_gltf_files.h"
+#include "core/scene_file/scene_error.h"
 #include "import_test_files.h"
 
 namespace {
@@ -120,13 +121,27 @@ TEST_F(PbrImport, GltfMetallicRoughnessMapsEachFactor) {
     EXPECT_EQ(note.find("gold"), std::string::npos) << note;
 }
 
-TEST_F(PbrImport, GltfTexturesStayAnHonestNote) {
-    write("m.gltf", gltf_with_materials(Json::array(
-                        {{{"name", "panel"},
-                          {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 0}}}}}}})));
+// The textures we do not render are an honest note (texture_import_test has those we do); a
+// texture we would render that the file does not define is an error naming it.
+TEST_F(PbrImport, GltfTexturesNotRenderedStayAnHonestNote) {
+    write("m.gltf", gltf_with_materials(Json::array({{{"name", "panel"},
+                                                      {"occlusionTexture", {{"index", 0}}},
+                                                      {"emissiveTexture", {{"index", 0}}}}})));
     const SceneDescription scene = load(R"({"type": "mesh_file", "file": "m.gltf", "material": "from_file"})");
     ASSERT_EQ(scene.notes.size(), 1u);
-    EXPECT_NE(scene.notes[0].find("panel: baseColorTexture, metallicRoughnessTexture"), std::string::npos) << scene.notes[0];
+    EXPECT_NE(scene.notes[0].find("panel: occlusionTexture, emissiveTexture"), std::string::npos)
+        << scene.notes[0];
+    write("bad.gltf", gltf_with_materials(Json::array(
+                          {{{"name", "panel"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}})));
+    try {
+        load(R"({"type": "mesh_file", "file": "bad.gltf", "material": "from_file"})");
+        ADD_FAILURE() << "no error for a baseColorTexture the file does not define";
+    } catch (const wt::SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("material \"panel\": baseColorTexture: texture 0 does not exist"), std::string::npos)
+            << e.what();
+    }
+    // With a scene material in place of the file's, the file's textures are not read at all.
+    EXPECT_NO_THROW(load(R"({"type": "mesh_file", "file": "bad.gltf", "material": "white"})"));
 }
 
 TEST_F(PbrImport, MtlPbrExtensionAndPhongHighlights) {

@@ -72,6 +72,27 @@ BoundingSphere bounding_sphere(const Scene& scene) {
     return {0.5f * (lo + hi), r > 0.0f && std::isfinite(r) ? r : 1.0f};
 }
 
+void push_texture_coordinates(TextureCoordinateTable& table, const TriangleMesh& mesh, const std::array<uint32_t, 3>& tri) {
+    const float area = 0.5f * glm::length(glm::cross(mesh.vertices[tri[1]] - mesh.vertices[tri[0]],
+                                                     mesh.vertices[tri[2]] - mesh.vertices[tri[0]]));
+    if (mesh.uvs.empty()) table.push({}, {}, {}, area);
+    else
+        table.push(mesh.uvs[tri[0]], mesh.uvs[tri[1]], mesh.uvs[tri[2]], area, mesh.vertices[tri[1]] - mesh.vertices[tri[0]],
+                   mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
+}
+
+// The ray cone of a camera ray (Akenine-Moller et al. 2019, section 20.3.4): a pinhole's spread
+// is the angle one pixel subtends at the image's centre (a thin lens is taken as its pinhole);
+// an orthographic camera's rays are parallel, each one pixel wide.
+void set_camera_cone(Scene& scene, const SceneDescription& d) {
+    const float height = float(d.settings.height);
+    if (d.camera.projection == Projection::orthographic) {
+        scene.cone_width0 = d.camera.width_world / float(d.settings.width);
+        return;
+    }
+    scene.cone_spread = 2.0f * std::tan(0.5f * d.camera.fov_degrees * 3.14159265358979f / 180.0f) / height;
+}
+
 }  // namespace
 
 Scene build_scene(const SceneDescription& description) {
@@ -84,7 +105,13 @@ Scene build_scene(const SceneDescription& description) {
     // knows them. A mesh with vertex normals stays triangles: there is no interpolating them
     // over a parallelogram.
     const bool parallelograms = description.settings.accuracy.triangles == TriangleTest::moller_trumbore;
-    auto as_parallelogram = [&](const TriangleMesh& m) { return parallelograms && m.parallelogram && m.normals.empty(); };
+    // Nor one with texture coordinates, which a hit interpolates by its triangle's barycentrics.
+    auto as_parallelogram = [&](const TriangleMesh& m) {
+        return parallelograms && m.parallelogram && m.normals.empty() && m.uvs.empty();
+    };
+    // The coordinate table exists only if some material will read it.
+    const bool textured = std::any_of(description.materials.begin(), description.materials.end(),
+                                      [](const Material& m) { return m.has_textures(); });
     // The shading-normal table exists only if some triangle will read it.
     const bool smooth = std::any_of(description.meshes.begin(), description.meshes.end(), [](const TriangleMesh& m) {
         return !m.normals.empty() && !m.triangles.empty();
@@ -94,14 +121,19 @@ Scene build_scene(const SceneDescription& description) {
         if (!mesh.normals.empty() && mesh.normals.size() != mesh.vertices.size())
             throw std::invalid_argument("build_scene: mesh " + std::to_string(k) + " has " + std::to_string(mesh.normals.size()) +
                                         " normals for " + std::to_string(mesh.vertices.size()) + " vertices");
+        if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.vertices.size())
+            throw std::invalid_argument("build_scene: mesh " + std::to_string(k) + " has " + std::to_string(mesh.uvs.size()) +
+                                        " texture coordinates for " + std::to_string(mesh.vertices.size()) + " vertices");
         if (!as_parallelogram(mesh)) continue;
         scene.triangles.push_parallelogram(mesh.vertices[0], mesh.vertices[1], mesh.vertices[3], mesh.material);
         if (smooth) scene.shading_normals.push_flat();
+        if (textured) scene.texture_coordinates.push({}, {}, {}, 0.0f);
     }
     for (const TriangleMesh& mesh : description.meshes) {
         if (as_parallelogram(mesh)) continue;
         for (const auto& tri : mesh.triangles) {
             scene.triangles.push_back(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], mesh.material);
+            if (textured) push_texture_coordinates(scene.texture_coordinates, mesh, tri);
             if (!smooth) continue;
             if (mesh.normals.empty()) scene.shading_normals.push_flat();
             else scene.shading_normals.push(mesh.normals[tri[0]], mesh.normals[tri[1]], mesh.normals[tri[2]]);
@@ -113,6 +145,10 @@ Scene build_scene(const SceneDescription& description) {
     build_instances(description, scene.primitive_count(), scene.instances);
     scene.has_rough_materials = std::any_of(scene.materials.begin(), scene.materials.end(),
                                             [](const Material& m) { return m.is_microfacet(); });
+    if (textured) {
+        for (const TextureImage& image : description.textures) scene.textures.emplace_back(image);
+        set_camera_cone(scene, description);
+    }
     scene.lights = LightTable(scene.triangles, scene.materials);
     if (!description.lights.empty()) {
         scene.listed_lights = SceneLights(description.lights, scene.lights.empty() ? 0.0 : area_light_power(scene.triangles, scene.materials),

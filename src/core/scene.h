@@ -18,6 +18,8 @@
 #include "core/ray_offset.h"
 #include "core/scene_description.h"
 #include "core/shading_normals.h"
+#include "core/textures/mip_pyramid.h"
+#include "core/textures/texture_coordinates.h"
 
 namespace wt {
 
@@ -47,6 +49,17 @@ struct Scene {
     // with the rough materials' light samples and pdfs only where this is set, so the other
     // scenes run the loop they ran before rough materials existed (kernels/wavefront/shade_queue.h).
     bool has_rough_materials = false;
+    // Image textures, indexed by Material::color_texture and the like, and the coordinates they
+    // are looked up at; both empty unless some material has a texture. A textured scene shades
+    // with the loop that tests materials at run time (kernels/wavefront/stage_shade.cpp), and
+    // looks its materials up through core/material_at_hit.h.
+    std::vector<MipPyramid> textures;
+    TextureCoordinateTable texture_coordinates;
+    // The camera's ray cone (Akenine-Moller et al. 2019): its width at distance t is
+    // cone_width0 + cone_spread * t, which picks the texture level a camera ray's hit reads.
+    float cone_width0 = 0.0f, cone_spread = 0.0f;
+
+    bool has_textures() const { return !textures.empty(); }
 
     // The scene's own primitives, not the instances' (those are always traced through a BVH).
     uint32_t primitive_count() const { return uint32_t(triangles.size() + spheres.size()); }

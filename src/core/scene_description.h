@@ -10,12 +10,14 @@
 #include <memory>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/accuracy.h"
 #include "core/adaptive_settings.h"
 #include "core/estimator_settings.h"
 #include "core/film/pixel_filter_settings.h"
+#include "core/textures/texture_image.h"
 
 namespace wt {
 
@@ -49,7 +51,19 @@ struct Material {
     // materials' light sampler and the photons read that, and this lobe is not theirs.
     glm::vec3 base_color{0.0f};   // glTF's baseColorFactor, in [0, 1]
     float metallic = 0.0f;        // glTF's metallicFactor, in [0, 1]
+    // Index into SceneDescription::textures, or -1: multiplies albedo (diffuse materials),
+    // base_color (principled) or f0 (conductors) at each hit (core/material_at_hit.h).
+    int32_t color_texture = -1;
+    // principled only: glTF's metallicRoughnessTexture, its blue channel multiplying metallic
+    // and its green one roughness (linear data, not colour).
+    int32_t metallic_roughness_texture = -1;
+    // A tangent-space normal map (glTF's normalTexture, linear data): RGB 2 c - 1 is the normal
+    // about the triangle's tangent frame (core/textures/texture_coordinates.h), x and y times
+    // normal_scale; it replaces the shading normal. Triangles with texture coordinates only.
+    int32_t normal_texture = -1;
+    float normal_scale = 1.0f;
 
+    bool has_textures() const { return color_texture >= 0 || metallic_roughness_texture >= 0 || normal_texture >= 0; }
     bool is_emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
     bool is_specular() const { return type >= MaterialType::mirror && type <= MaterialType::conductor; }
     // A GGX lobe: neither diffuse nor specular (light samples and BSDF samples, never connected
@@ -71,6 +85,9 @@ struct TriangleMesh {
     // for a flat-shaded mesh, which shades with the geometric normal. Ray offsets and the
     // side a ray is on always use the geometric normal.
     std::vector<glm::vec3> normals;
+    // Texture coordinates, one per vertex (glTF's TEXCOORD_0; OBJ's vt with v flipped, so v = 0
+    // is the image's top row in both), or empty. Read only when some material has a texture.
+    std::vector<glm::vec2> uvs;
 };
 
 // A named mesh that instances place (the scene file's "meshes"; a glTF mesh used by several
@@ -164,6 +181,7 @@ struct SceneDescription {
     std::vector<MeshPrototype> prototypes;   // usually empty: meshes stored once, placed by instances
     std::vector<InstanceDescription> instances;
     std::vector<LightDescription> lights;  // beside the emissive materials; usually empty
+    std::vector<TextureImage> textures;    // what Material::color_texture and the like index
     // One line each, for the user, about what the loader skipped or could not map (degenerate
     // triangles dropped from a mesh file, its textures, ...); never an error. The CLI prints them.
     std::vector<std::string> notes;

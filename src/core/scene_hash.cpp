@@ -61,11 +61,14 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         // Only the types that read them: the other materials keep the hashes they had.
         if (m.type >= MaterialType::conductor) h.value(m.roughness), h.value(m.f0), h.value(m.eta), h.value(m.k);
         if (m.type == MaterialType::principled) h.value(m.base_color), h.value(m.metallic);
+        if (m.has_textures())
+            h.value(m.color_texture), h.value(m.metallic_roughness_texture), h.value(m.normal_texture), h.value(m.normal_scale);
     }
     h.word(d.meshes.size());
     for (const TriangleMesh& mesh : d.meshes) {
         h.array(mesh.vertices), h.array(mesh.triangles), h.array(mesh.normals);
         h.value(mesh.material), h.value(mesh.parallelogram);
+        if (!mesh.uvs.empty()) h.array(mesh.uvs);
     }
     h.array(d.spheres);
     // Only when there are some: a scene without instances keeps the hash it had.
@@ -79,6 +82,14 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         }
         h.word(d.instances.size());
         for (const InstanceDescription& k : d.instances) h.value(k.prototype), h.value(k.transform);
+    }
+    // Only when there are some, as the lights below.
+    if (!d.textures.empty()) {
+        h.word(d.textures.size());
+        for (const TextureImage& t : d.textures) {
+            h.value(t.srgb), h.value(t.wrap_s), h.value(t.wrap_t), h.value(t.offset), h.value(t.scale), h.value(t.rotation);
+            h.word(uint64_t(t.texels->width)), h.word(uint64_t(t.texels->height)), h.array(t.texels->rgba);
+        }
     }
     // Only when there are some: a scene without the list keeps the hash it had.
     if (!d.lights.empty()) {

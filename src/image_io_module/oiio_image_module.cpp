@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "core/image_io/image_module_abi.h"
@@ -73,15 +74,43 @@ void free_image(WtReadImage* image) {
     *image = WtReadImage{};
 }
 
-int read_image(const char* path, WtReadImage* image, char* error, size_t error_size) {
+// The file or bytes' format, for OpenImageIO to pick its reader by: PNG and JPEG by signature.
+std::string name_for_reader(const WtImageSource& source) {
+    if (!source.bytes) return source.name;
+    const auto* b = static_cast<const unsigned char*>(source.bytes);
+    if (source.size >= 8 && std::memcmp(b, "\x89PNG\r\n\x1a\n", 8) == 0) return "image.png";
+    if (source.size >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return "image.jpg";
+    return {};
+}
+
+int read_image_source(const WtImageSource* source, WtReadImage* image, char* error, size_t error_size) {
     *image = WtReadImage{};
+    const std::string path = source->name;
     try {
-        auto in = OIIO::ImageInput::open(path);
+        const std::string reader_name = name_for_reader(*source);
+        if (reader_name.empty()) {
+            set_error(error, error_size, path + ": not a PNG or JPEG image (its first bytes are neither signature)");
+            return 1;
+        }
+        OIIO::Filesystem::IOMemReader memory(source->bytes, source->bytes ? source->size : 0);
+        auto in = OIIO::ImageInput::open(reader_name, nullptr, source->bytes ? &memory : nullptr);
         if (!in) {
-            set_error(error, error_size, std::string(path) + ": cannot read the image: " + OIIO::geterror());
+            set_error(error, error_size, path + ": cannot read the image: " + OIIO::geterror());
             return 1;
         }
         const OIIO::ImageSpec& spec = in->spec();
+        const bool too_wide = source->max_side > 0 && (spec.width > source->max_side || spec.height > source->max_side);
+        if (too_wide || (source->max_pixels > 0 && size_t(spec.width) * size_t(spec.height) > source->max_pixels)) {
+            set_error(error, error_size,
+                      path + ": " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                          " pixels, more than the " + std::to_string(source->max_side) + " per side and " +
+                          std::to_string(source->max_pixels) + " in all an image may have here");
+            return 1;
+        }
+        if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+            set_error(error, error_size, path + ": the image is empty");
+            return 1;
+        }
         const size_t values = size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels);
         image->pixels = static_cast<float*>(std::malloc(std::max<size_t>(1, values) * sizeof(float)));
         image->channel_names = static_cast<char**>(std::calloc(size_t(std::max(1, spec.nchannels)), sizeof(char*)));
@@ -97,19 +126,25 @@ int read_image(const char* path, WtReadImage* image, char* error, size_t error_s
             image->attribute_values[image->attribute_count++] = copy_string(p.get_string());
         }
         if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image->pixels)) {
-            set_error(error, error_size, std::string(path) + ": reading failed: " + in->geterror());
+            set_error(error, error_size, path + ": reading failed: " + in->geterror());
             free_image(image);
             return 1;
         }
         return 0;
     } catch (const std::exception& e) {
-        set_error(error, error_size, std::string(path) + ": reading failed: " + e.what());
+        set_error(error, error_size, path + ": reading failed: " + e.what());
         free_image(image);
         return 1;
     }
 }
 
-const WtImageModuleApi api = {WT_IMAGE_MODULE_ABI_VERSION, OIIO_VERSION_STRING, write_image, read_image, free_image};
+int read_image(const char* path, WtReadImage* image, char* error, size_t error_size) {
+    const WtImageSource file{path, nullptr, 0, 0, 0};
+    return read_image_source(&file, image, error, error_size);
+}
+
+const WtImageModuleApi api = {WT_IMAGE_MODULE_ABI_VERSION, OIIO_VERSION_STRING, write_image, read_image, free_image,
+                              read_image_source};
 
 }  // namespace
 

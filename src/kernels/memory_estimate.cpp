@@ -50,6 +50,13 @@ double geometry_bytes(const Scene& scene) {
     return triangles * (21 * sizeof(float) + sizeof(uint32_t)) + double(scene.spheres.size()) * (4 * sizeof(float) + sizeof(uint32_t));
 }
 
+// The textures' mip pyramids and the coordinates they are looked up at: 0 without textures.
+double texture_bytes(const Scene& scene) {
+    double bytes = double(scene.texture_coordinates.bytes());
+    for (const MipPyramid& t : scene.textures) bytes += double(t.bytes());
+    return bytes;
+}
+
 }  // namespace
 
 double bytes_per_instance(int node_width) {
@@ -83,6 +90,7 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
     if (scene.merges_photons) e.photons = photon_batch_bytes(scene, options.photon_batch_paths);
     e.instance_count = scene.instances.instances.size();
     if (e.instance_count > 0) e.instances = double(e.instance_count) * bytes_per_instance(options.bvh.node_width);
+    e.textures = texture_bytes(scene);
     return e;
 }
 
@@ -95,6 +103,11 @@ std::string format_bytes(double bytes) {
     return text;
 }
 
+std::string texture_memory_line(const Scene& scene) {
+    return "textures: " + std::to_string(scene.textures.size()) + (scene.textures.size() == 1 ? " image, " : " images, ") +
+           format_bytes(texture_bytes(scene)) + " (mip levels of linear RGBA floats, and their coordinates)";
+}
+
 std::string memory_problem(const MemoryEstimate& e, double available) {
     if (available <= 0.0 || e.to_allocate() <= available) return {};
     std::ostringstream msg;
@@ -104,6 +117,7 @@ std::string memory_problem(const MemoryEstimate& e, double available) {
     if (e.photons > 0.0) msg << ", photon maps " << format_bytes(e.photons);
     if (e.instance_count > 0)
         msg << ", " << e.instance_count << " instances x " << format_bytes(e.instances / double(e.instance_count));
+    if (e.textures > 0.0) msg << ", textures " << format_bytes(e.textures);
     msg << "), more than the " << format_bytes(available) << " of memory available; ";
     // Name what dominates.
     if (e.photons >= e.queues() && e.photons >= e.film && e.photons >= e.bvh && e.photons >= e.instances)

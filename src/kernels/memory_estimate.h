@@ -27,11 +27,12 @@ struct MemoryEstimate {
     double photons = 0.0;           // one batch of photon maps at its peak (kernels/photons/photon_memory.h), expected
     double instances = 0.0;         // placements, their records and the top-level tree (part allocated)
     std::size_t instance_count = 0;
+    double textures = 0.0;          // the textures' mip pyramids and coordinates (allocated, as geometry)
 
     double queues() const { return queues_per_worker * double(workers); }
     // What the render has yet to allocate.
     double to_allocate() const { return film + queues() + bvh + photons + instances; }
-    double total() const { return to_allocate() + geometry; }
+    double total() const { return to_allocate() + geometry + textures; }
 };
 
 // What one instance costs, whatever its mesh: its placement, its traversal record and its share
@@ -46,6 +47,9 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
 // more than the 20.1 GB available; lower --shadow-rays or --tile-size, or use fewer --threads"
 // Empty when it fits (or nothing is known of the memory available).
 std::string memory_problem(const MemoryEstimate& estimate, double available);
+
+// "textures: 3 images, 5.6 MB (mip levels of linear RGBA floats, and their coordinates)"
+std::string texture_memory_line(const Scene& scene);
 
 // "12.3 MB" and the like, for messages.
 std::string format_bytes(double bytes);

@@ -2,6 +2,7 @@
 
 #include "core/glossy_light_sampler.h"
 #include "core/lights/listed_light_sampler.h"
+#include "core/material_at_hit.h"
 #include "core/path_vertex.h"
 #include "kernels/accel/bvh_single_ray.h"
 #include "kernels/photons/photon_gather.h"
@@ -34,6 +35,7 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
     bool specular_light_elsewhere = false;  // light tracing only: PathContinuation::specular_light_elsewhere
     [[maybe_unused]] bool count_environment = true;  // kListedLights: PathContinuation::count_environment
 
+    std::optional<Material> textured;  // the hit's material with its textures looked up (core/material_at_hit.h)
     for (uint32_t bounce = 0;; ++bounce) {
         const Hit hit = closest(ray);
         if (!hit.found()) {
@@ -42,8 +44,8 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
                     radiance += escaped_radiance<E>(scene, ray.direction, throughput, bsdf_pdf, bounce);
             break;
         }
-        const SurfacePoint surface = surface_at(scene, ray, hit);
-        const Material& m = scene.materials[surface.material];
+        SurfacePoint surface = surface_at(scene, ray, hit);  // a normal map may change its shading normal
+        const Material& m = material_at(scene, hit, surface, ray, bounce == 0, textured);
         if (first_surface && !first_surface->found)
             record_first_surface(*first_surface, scene.camera, bounce, ray, hit, surface, m, throughput);
         PathVertexRecord vertex{bounce, hit, surface.position, surface.normal, surface.shading_normal, surface.material,

@@ -210,6 +210,7 @@ int run_render_command(RenderCommandOptions& o) {
         const RenderSettings settings = description.settings;
         const Scene scene = build_scene(description);
         description = SceneDescription();  // a big mesh's vertices and indices are in the scene now
+        if (scene.has_textures() && !o.quiet) std::cerr << "wavetrace: " << texture_memory_line(scene) << "\n";
 
         o.render.accel = *parse_accel(o.accel_name);  // CLI checked membership
         if (o.debug_sample)

@@ -32,11 +32,13 @@ std::optional<std::string> ImageData::attribute(const std::string& name) const {
     return std::nullopt;
 }
 
-ImageData read_image(const std::string& path) {
+namespace {
+
+ImageData read_source(const WtImageSource& source) {
     const WtImageModuleApi& module = image_module();
     WtReadImage raw{};
     char error[1024];
-    if (module.read_image(path.c_str(), &raw, error, sizeof error) != 0) throw ImageError(error);
+    if (module.read_image_source(&source, &raw, error, sizeof error) != 0) throw ImageError(error);
     const auto release = [&](WtReadImage* r) { module.free_image(r); };
     std::unique_ptr<WtReadImage, decltype(release)> guard(&raw, release);
 
@@ -46,6 +48,21 @@ ImageData read_image(const std::string& path) {
     image.pixels.assign(raw.pixels, raw.pixels + std::size_t(raw.width) * std::size_t(raw.height) * std::size_t(raw.channels));
     for (int i = 0; i < raw.attribute_count; ++i) image.attributes.emplace_back(raw.attribute_names[i], raw.attribute_values[i]);
     return image;
+}
+
+}  // namespace
+
+ImageData read_image(const std::string& path) { return read_image(path, ImageLimits{}); }
+
+ImageData read_image(const std::string& path, ImageLimits limits) {
+    return read_source(WtImageSource{path.c_str(), nullptr, 0, limits.max_pixels, limits.max_side});
+}
+
+ImageData read_image_bytes(const std::string& name, const void* bytes, std::size_t size, ImageLimits limits) {
+    // A null pointer would mean "the file at name": an empty buffer is still a buffer.
+    static const unsigned char kNothing = 0;
+    return read_source(WtImageSource{name.c_str(), bytes ? bytes : &kNothing, bytes ? size : 0, limits.max_pixels,
+                                     limits.max_side});
 }
 
 }  // namespace wt

@@ -2,6 +2,7 @@
 // Reads an image file (any format OpenImageIO reads: EXR with all its layers, PNG, HDR, ...)
 // through the image I/O module, for tests, error metrics against references, and tools.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <utility>
@@ -29,5 +30,14 @@ struct ImageData {
 
 // Throws ImageError naming the file if it cannot be read (or the module cannot be loaded).
 ImageData read_image(const std::string& path);
+
+// Bounds an image is held to from its header, before its pixels are read (0: none).
+struct ImageLimits {
+    std::size_t max_pixels = 0;
+    int max_side = 0;
+};
+ImageData read_image(const std::string& path, ImageLimits limits);
+// A PNG or JPEG image in memory (inside a .glb, a data URI); `name` says which in messages.
+ImageData read_image_bytes(const std::string& name, const void* bytes, std::size_t size, ImageLimits limits);
 
 }  // namespace wt

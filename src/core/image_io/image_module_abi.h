@@ -12,7 +12,7 @@
 
 extern "C" {
 
-enum { WT_IMAGE_MODULE_ABI_VERSION = 1 };
+enum { WT_IMAGE_MODULE_ABI_VERSION = 2 };  // 2: read_image_source
 
 enum WtPixelType { WT_PIXEL_FLOAT = 0, WT_PIXEL_UINT8 = 1 };
 enum WtAttributeType { WT_ATTRIBUTE_STRING = 0, WT_ATTRIBUTE_INT = 1, WT_ATTRIBUTE_FLOAT = 2 };
@@ -45,6 +45,18 @@ struct WtReadImage {
     char** attribute_values;  // every attribute as text
 };
 
+// What read_image_source reads: the file at `name`, or, when `bytes` is set, the `size` bytes
+// there (an image inside a .glb or a data URI; PNG or JPEG, told by their signature), with
+// `name` for messages. An image of more than max_pixels pixels, or a side above max_side, is
+// refused from its header, before its pixels are read (0: no limit).
+struct WtImageSource {
+    const char* name;
+    const void* bytes;
+    size_t size;
+    size_t max_pixels;
+    int max_side;
+};
+
 struct WtImageModuleApi {
     int abi_version;             // WT_IMAGE_MODULE_ABI_VERSION of the module's build
     const char* library_version; // OpenImageIO's, for messages
@@ -53,6 +65,7 @@ struct WtImageModuleApi {
     int (*write_image)(const WtImageToWrite* image, char* error, size_t error_size);
     int (*read_image)(const char* path, WtReadImage* image, char* error, size_t error_size);
     void (*free_image)(WtReadImage* image);
+    int (*read_image_source)(const WtImageSource* source, WtReadImage* image, char* error, size_t error_size);
 };
 
 // The module's one exported symbol.

@@ -29,11 +29,6 @@
 namespace wt {
 namespace {
 
-// Textures are not rendered; leaving the image bytes undecoded also spares their memory.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-    return true;
-}
-
 glm::dmat4 local_transform(const tinygltf::Node& node) {
     if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glm
     glm::dmat4 m(1.0);
@@ -52,7 +47,8 @@ const char* mode_name(int mode) {
 
 class GltfReader {
 public:
-    GltfReader(const std::string& path, const tinygltf::Model& model) : path_(path), model_(model) {}
+    GltfReader(const std::string& path, const tinygltf::Model& model, MeshFileUse use)
+        : path_(path), model_(model), use_(use) {}
 
     ImportedMesh read() {
         std::vector<int> roots;
@@ -87,7 +83,12 @@ public:
         if (!all_have_normals_ && any_have_normals_)
             mesh_.notes.push_back("some primitives have no NORMAL: the file's normals are not used");
         if (!any_material_) mesh_.triangle_materials.clear();
-        for (const tinygltf::Material& m : model_.materials) mesh_.materials.push_back(map_gltf_material(m));
+        if (!any_have_uvs_) mesh_.uvs.clear();
+        GltfTextures textures(path_, model_, mesh_.textures, use_.file_materials);
+        for (std::size_t i = 0; i < model_.materials.size(); ++i) {
+            const tinygltf::Material& m = model_.materials[i];
+            mesh_.materials.push_back(map_gltf_material(m, m.name.empty() ? "material " + std::to_string(i) : m.name, textures));
+        }
         return std::move(mesh_);
     }
 
@@ -147,6 +148,36 @@ private:
         });
     }
 
+    // TEXCOORD_0 (FLOAT, or normalised UNSIGNED_BYTE / UNSIGNED_SHORT), appended; a primitive
+    // without it gets (0, 0), and a file where none has it stores none.
+    void read_texture_coordinates(const tinygltf::Primitive& primitive, const std::string& where, std::size_t count) {
+        const std::size_t first = mesh_.uvs.size();
+        mesh_.uvs.resize(first + count, glm::vec2(0.0f));
+        const auto uv = primitive.attributes.find("TEXCOORD_0");
+        if (uv == primitive.attributes.end()) return;
+        any_have_uvs_ = true;
+        const GltfAccessor uvs(model_, uv->second, TINYGLTF_TYPE_VEC2,
+                               {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                               accessor_name(uv->second, "TEXCOORD_0", where));
+        if (uvs.count() != count) fail(where + ": TEXCOORD_0 and POSITION counts differ");
+        const int type = uvs.component_type();
+        uvs.for_each([&](std::size_t i, const unsigned char* bytes) {
+            glm::vec2& t = mesh_.uvs[first + i];
+            if (type == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+                std::memcpy(&t, bytes, sizeof t);
+            } else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+                t = glm::vec2(float(bytes[0]) / 255.0f, float(bytes[1]) / 255.0f);
+            } else {
+                uint16_t s[2];
+                std::memcpy(s, bytes, sizeof s);
+                t = glm::vec2(float(s[0]) / 65535.0f, float(s[1]) / 65535.0f);
+            }
+            if (!std::isfinite(t.x) || !std::isfinite(t.y))
+                throw MeshFileError(uvs.context() + ": element " + std::to_string(i) + " is not finite");
+        });
+    }
+
     void read_primitive(const tinygltf::Primitive& primitive, const std::string& where, const glm::dmat4& world) {
         const int mode = primitive.mode;
         if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN)
@@ -177,6 +208,7 @@ private:
             read_vec3s(normals, mesh_.normals);
         }
         if (!all_have_normals_) std::vector<glm::vec3>().swap(mesh_.normals);
+        read_texture_coordinates(primitive, where, positions.count());
 
         const std::size_t first_triangle = mesh_.triangles.size();
         PrimitiveTriangles triangles(PrimitiveMode(mode), mesh_.triangles);
@@ -232,6 +264,8 @@ private:
     std::vector<bool> shared_read_;
     bool all_have_normals_ = true;
     bool any_have_normals_ = false;
+    bool any_have_uvs_ = false;
+    MeshFileUse use_;
     uint64_t visits_ = 0;
     bool any_material_ = false;
     std::unordered_set<std::string> skipped_;  // primitives of points or lines, noted once each
@@ -275,9 +309,9 @@ bool read_referenced_file(std::vector<unsigned char>* out, std::string* err, con
 
 }  // namespace
 
-ImportedMesh read_gltf_file(const std::string& path) {
+ImportedMesh read_gltf_file(const std::string& path, MeshFileUse use) {
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(skip_image, nullptr);
+    loader.SetImageLoader(keep_encoded_image, nullptr);
     loader.SetFsCallbacks({&referenced_file_exists, &tinygltf::ExpandFilePath, &read_referenced_file, &tinygltf::WriteWholeFile, nullptr});
     tinygltf::Model model;
     std::string err, warn;
@@ -299,7 +333,7 @@ ImportedMesh read_gltf_file(const std::string& path) {
         }
     }
     check_gltf_version_and_extensions(path, model);
-    ImportedMesh mesh = GltfReader(path, model).read();
+    ImportedMesh mesh = GltfReader(path, model, use).read();
     return mesh;
 }
 

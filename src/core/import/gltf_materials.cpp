@@ -1,5 +1,7 @@
 #include "core/import/gltf_materials.h"
 
+#include <cmath>
+
 #include <glm/common.hpp>
 
 #include "core/import/material_mapping.h"
@@ -23,7 +25,7 @@ glm::vec3 rgb(const std::vector<double>& factor, float fallback) {
 
 }  // namespace
 
-ImportedMaterial map_gltf_material(const tinygltf::Material& m) {
+ImportedMaterial map_gltf_material(const tinygltf::Material& m, const std::string& name, GltfTextures& textures) {
     ImportedMaterial out;
     const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
     const glm::vec3 base = reflectance_from_file(rgb(pbr.baseColorFactor, 1.0f), "baseColorFactor", out);
@@ -46,14 +48,50 @@ ImportedMaterial map_gltf_material(const tinygltf::Material& m) {
     out.material.name = m.name;
     if (m.alphaMode != "OPAQUE") out.unmapped.push_back("alphaMode " + m.alphaMode);
 
-    const struct { int index; const char* name; } textures[] = {
-        {pbr.baseColorTexture.index, "baseColorTexture"},
-        {pbr.metallicRoughnessTexture.index, "metallicRoughnessTexture"},
-        {m.normalTexture.index, "normalTexture"},
-        {m.occlusionTexture.index, "occlusionTexture"},
-        {m.emissiveTexture.index, "emissiveTexture"}};
-    for (const auto& t : textures)
-        if (t.index >= 0) out.unmapped.push_back(t.name);
+    // A metallic-roughness texture varies metallic, which principled_material() turned into a
+    // conductor at metallicFactor 1: such a material stays principled, metallic 1 times the texture.
+    const tinygltf::TextureInfo& mr_texture = pbr.metallicRoughnessTexture;
+    const bool dielectric = transmission > 0.0;
+    if (mr_texture.index >= 0 && !dielectric && out.material.type != MaterialType::principled) {
+        const std::string kept = out.material.name;
+        out.material = Material();
+        out.material.name = kept;
+        out.material.type = MaterialType::principled;
+        out.material.base_color = base;
+        out.material.metallic = 1.0f;
+        out.material.roughness = roughness;
+        out.material.ior = ior;
+    }
+    const MaterialType type = out.material.type;
+    // Each texture on TEXCOORD_0 (its KHR_texture_transform included) where the material has the
+    // parameter it multiplies; otherwise a note.
+    const auto map_texture = [&](const auto& info, bool applies, bool srgb, const std::string& field) {
+        if (info.index < 0) return -1;
+        if (!applies) {
+            out.unmapped.push_back(field);
+            return -1;
+        }
+        const auto transform = info.extensions.find("KHR_texture_transform");
+        const bool transform_coordinates = transform != info.extensions.end() && transform->second.Has("texCoord") &&
+                                           transform->second.Get("texCoord").GetNumberAsInt() != 0;
+        if (info.texCoord != 0 || transform_coordinates) {
+            out.unmapped.push_back(field + " on TEXCOORD_" + std::to_string(transform_coordinates ? 1 : info.texCoord) +
+                                   " (only TEXCOORD_0 is read)");
+            return -1;
+        }
+        return textures.add(info.index, info.extensions, srgb, name, field);
+    };
+    // The base colour texture multiplies the factor (glTF 2.0, 3.9.2): a principled material's
+    // base colour, or the F0 of the conductor metallic 1 loads as; glass has no colour.
+    const bool coloured = type == MaterialType::principled || type == MaterialType::conductor || type == MaterialType::rough_conductor;
+    out.material.color_texture = map_texture(pbr.baseColorTexture, coloured, true, "baseColorTexture");
+    out.material.metallic_roughness_texture =
+        map_texture(mr_texture, type == MaterialType::principled, false, "metallicRoughnessTexture");
+    // Normal maps perturb the shading normal, which every material type scatters about.
+    out.material.normal_texture = map_texture(m.normalTexture, true, false, "normalTexture");
+    out.material.normal_scale = std::isfinite(m.normalTexture.scale) ? float(m.normalTexture.scale) : 1.0f;
+    map_texture(m.occlusionTexture, false, false, "occlusionTexture");
+    map_texture(m.emissiveTexture, false, true, "emissiveTexture");
     return out;
 }
 

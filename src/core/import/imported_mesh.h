@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/scene_description.h"
@@ -51,10 +52,13 @@ struct ImportedMaterial {
 struct ImportedMesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;  // the file's vertex normals: empty, or one per position
+    // Texture coordinates (v = 0 the image's top row): empty, or one per position.
+    std::vector<glm::vec2> uvs;
     std::vector<std::array<uint32_t, 3>> triangles;
     // Per triangle, an index into `materials`, or kNoMaterial; empty when the file has none.
     std::vector<uint32_t> triangle_materials;
     std::vector<ImportedMaterial> materials;
+    std::vector<TextureImage> textures;  // what the materials' color_texture and the like index
     std::vector<MeshPiece> pieces;   // cover `positions` in order
     std::vector<SharedMeshPlacement> placements;  // empty unless some piece is shared
     uint32_t shared_count = 0;

@@ -34,16 +34,16 @@ std::string first_line(const std::string& text) {
     return s;
 }
 
-ImportedMesh read_mesh_file(const std::string& path) {
+ImportedMesh read_mesh_file(const std::string& path, MeshFileUse use) {
     const std::string ext = lower_extension(path);
-    ImportedMesh (*reader)(const std::string&) = nullptr;
+    ImportedMesh (*reader)(const std::string&, MeshFileUse) = nullptr;
     if (ext == ".obj") reader = read_obj_file;
     else if (ext == ".ply") reader = read_ply_file;
     else if (ext == ".gltf" || ext == ".glb") reader = read_gltf_file;
     else
         throw MeshFileError(path + ": unknown mesh file extension \"" + ext + "\" (allowed: .obj, .ply, .gltf, .glb)");
     check_readable(path);
-    ImportedMesh mesh = reader(path);
+    ImportedMesh mesh = reader(path, use);
     if (mesh.triangles.empty()) throw MeshFileError(path + ": the file has no triangles (an empty mesh)");
     if (mesh.positions.size() > UINT32_MAX)
         throw MeshFileError(path + ": " + std::to_string(mesh.positions.size()) +

@@ -11,14 +11,23 @@ namespace wt {
 // case-insensitive. Throws MeshFileError naming `path` (and the line, byte or accessor where the
 // format allows) for an unreadable or malformed file, an index out of range, a NaN or infinite
 // coordinate, a face with fewer than 3 vertices, or a file without a triangle.
-ImportedMesh read_mesh_file(const std::string& path);
+// What the scene will use of the file, so that nothing else is read.
+struct MeshFileUse {
+    // The file's own materials ("material": "from_file"): the images their textures name are
+    // read (an error if they cannot be). Without, the file's textures are not touched.
+    bool file_materials = true;
+    // A textured material of the scene's: the texture coordinates are kept (an OBJ vertex split
+    // per coordinate its corners give it). Without, they are kept only for textured file materials.
+    bool texture_coordinates = false;
+};
+ImportedMesh read_mesh_file(const std::string& path, MeshFileUse use = {});
 
 // The first line of a library's message, which is often several lines of which the first says it.
 std::string first_line(const std::string& text);
 
 // The format readers, each in its own file; read_mesh_file() checks what is common to all.
-ImportedMesh read_obj_file(const std::string& path);
-ImportedMesh read_ply_file(const std::string& path);
-ImportedMesh read_gltf_file(const std::string& path);
+ImportedMesh read_obj_file(const std::string& path, MeshFileUse use);
+ImportedMesh read_ply_file(const std::string& path, MeshFileUse use);
+ImportedMesh read_gltf_file(const std::string& path, MeshFileUse use);
 
 }  // namespace wt

@@ -2,8 +2,8 @@
 // buffer by our own reader, so that every message names the line, and a number that is not
 // one (`v abc`, `v nan`, an index past 2^63) is an error in the file's own words rather than
 // the 0 or the wrapped int tinyobjloader would hand over. MTL files are tinyobjloader's
-// (obj_materials.h). Only what becomes triangles is read: v, vn, f, mtllib and usemtl; vt,
-// o, g, s, lines, points and free-form geometry are skipped.
+// (obj_materials.h). Only what becomes triangles is read: v, vn, vt, f, mtllib and usemtl; o,
+// g, s, lines, points and free-form geometry are skipped.
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +23,7 @@ namespace {
 
 class ObjReader {
 public:
-    explicit ObjReader(const std::string& path) : path_(path), in_(path) {
+    ObjReader(const std::string& path, MeshFileUse use) : path_(path), in_(path), use_(use) {
         base_dir_ = std::filesystem::path(path).parent_path();
     }
 
@@ -66,7 +66,7 @@ private:
         if (keyword == "v") mesh_.positions.push_back(coordinates(words, "vertex"));
         else if (keyword == "vn") file_normals_.push_back(coordinates(words, "normal"));
         else if (keyword == "f") face(words);
-        else if (keyword == "vt") ++texture_coordinates_;
+        else if (keyword == "vt") texture_coordinate(words);
         else if (keyword == "usemtl") use_material(std::string(words.rest()));
         else if (keyword == "mtllib") read_material_libraries(words.rest());
     }
@@ -88,6 +88,23 @@ private:
         return v;
     }
 
+    // u [v [w]]: v flipped, as OBJ's v = 0 is the image's bottom row and ours its top.
+    void texture_coordinate(TextWords& words) {
+        glm::vec2 t(0.0f);
+        for (int k = 0; k < 2; ++k) {
+            const std::string_view word = words.next();
+            if (word.empty()) {
+                if (k == 0) fail("a texture coordinate needs at least 1 number, got 0");
+                break;
+            }
+            double value = 0.0;
+            if (!parse_real(word, value) || !std::isfinite(float(value)))
+                fail("texture coordinate \"" + std::string(word) + "\" is not a finite number");
+            t[k] = float(value);
+        }
+        file_uvs_.push_back(glm::vec2(t.x, 1.0f - t.y));
+    }
+
     // OBJ counts from 1; a negative index counts back from the last element defined so far.
     // Returns the 0-based index, which may be past the elements defined so far.
     int64_t resolve(std::string_view word, std::size_t defined, const char* what) const {
@@ -106,10 +123,22 @@ private:
         return index;
     }
 
-    // Corners v, v/vt, v/vt/vn or v//vn; the texture index is checked as a number only.
+    // A corner's normal or texture coordinate index, which must name one defined above it; -1
+    // for none (an empty word). `defined_so_far` ends the message.
+    int32_t defined_index(std::string_view word, std::size_t defined, const char* what, const char* defined_so_far) const {
+        if (word.empty()) return -1;
+        const int64_t i = resolve(word, defined, what);
+        if (uint64_t(i) >= defined)
+            fail(std::string(what) + " index " + std::string(word) + " out of range (" + std::to_string(defined) + " " +
+                 defined_so_far + ")");
+        return int32_t(i);
+    }
+
+    // Corners v, v/vt, v/vt/vn or v//vn.
     void face(TextWords& words) {
         polygon_.clear();
         polygon_normals_.clear();
+        polygon_uvs_.clear();
         for (std::string_view corner = words.next(); !corner.empty(); corner = words.next()) {
             const std::size_t slash = corner.find('/');
             const std::string_view v = corner.substr(0, slash);
@@ -127,21 +156,17 @@ private:
             const int64_t vertex = resolve(v, mesh_.positions.size(), "vertex");
             // Positive indices may name vertices defined further down; checked at the end.
             if (uint64_t(vertex) >= mesh_.positions.size()) forward_references_.push_back({line_, vertex + 1});
-            if (!vt.empty()) resolve(vt, texture_coordinates_, "texture coordinate");
-            int32_t normal = -1;
-            if (!vn.empty()) {
-                const int64_t n = resolve(vn, file_normals_.size(), "normal");
-                if (uint64_t(n) >= file_normals_.size())
-                    fail("normal index " + std::string(vn) + " out of range (" + std::to_string(file_normals_.size()) +
-                         " normals defined so far)");
-                normal = int32_t(n);
-            }
+            const int32_t uv = defined_index(vt, file_uvs_.size(), "texture coordinate", "defined so far");
+            const int32_t normal = defined_index(vn, file_normals_.size(), "normal", "normals defined so far");
             polygon_.push_back(uint32_t(vertex));
             polygon_normals_.push_back(normal);
+            polygon_uvs_.push_back(uv);
         }
         if (polygon_.size() < 3) fail("a face needs at least 3 vertices, got " + std::to_string(polygon_.size()));
         for (std::size_t k = 1; k + 1 < polygon_normals_.size(); ++k)
             corner_normals_.insert(corner_normals_.end(), {polygon_normals_[0], polygon_normals_[k], polygon_normals_[k + 1]});
+        for (std::size_t k = 1; k + 1 < polygon_uvs_.size(); ++k)
+            corner_uvs_.insert(corner_uvs_.end(), {polygon_uvs_[0], polygon_uvs_[k], polygon_uvs_[k + 1]});
         append_polygon_fan(polygon_, mesh_.triangles);
         mesh_.triangle_materials.resize(mesh_.triangles.size(), material_);
     }
@@ -182,35 +207,58 @@ private:
             !file_normals_.empty() && std::find(corner_normals_.begin(), corner_normals_.end(), -1) == corner_normals_.end();
         if (!file_normals_.empty() && !every_corner_has_normal)
             mesh_.notes.push_back("some faces name no vertex normal (\"vn\"): the file's normals are not used");
-        if (every_corner_has_normal) split_vertices_by_normal();
-        std::vector<int32_t>().swap(corner_normals_);
-
         if (!any_material_) mesh_.triangle_materials.clear();
-        for (const tinyobj::material_t& m : materials_) mesh_.materials.push_back(map_obj_material(m));
+        ObjTextures textures(base_dir_, mesh_.textures, use_.file_materials);
+        for (const tinyobj::material_t& m : materials_) mesh_.materials.push_back(map_obj_material(m, path_, textures));
+
+        // Texture coordinates if some corner names one and some material will read them (the
+        // others get (0, 0)): without, vertices are split by normal alone, as before textures.
+        const bool some_corner_has_uv =
+            std::any_of(corner_uvs_.begin(), corner_uvs_.end(), [](int32_t t) { return t >= 0; });
+        const bool uvs_read = use_.texture_coordinates || !mesh_.textures.empty();
+        const bool uvs = some_corner_has_uv && uvs_read;
+        if (every_corner_has_normal || uvs) split_vertices(every_corner_has_normal, uvs);
+        std::vector<int32_t>().swap(corner_normals_);
+        std::vector<int32_t>().swap(corner_uvs_);
         mesh_.pieces.push_back({0, mesh_.positions.size(), glm::dmat4(1.0)});
     }
 
-    // One output vertex per distinct (position, normal) pair a face corner names. A position
-    // keeps its index and the file's order when its corners agree on the normal (the common
-    // case), and is copied to the end once per other normal it is given.
-    void split_vertices_by_normal() {
-        std::vector<int32_t> normal_of(mesh_.positions.size(), -1);
-        std::unordered_map<uint64_t, uint32_t> copies;
-        mesh_.normals.assign(mesh_.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+    // One output vertex per distinct (position, normal, texture coordinate) a face corner names
+    // (of those attributes kept). A position keeps its index and the file's order when its
+    // corners agree (the common case), and is copied to the end once per other combination.
+    void split_vertices(bool normals, bool uvs) {
+        // The corner's attributes as one key: normal and coordinate indices, each + 1 (0: none).
+        const auto key_of = [&](std::size_t corner) {
+            const uint64_t n = normals ? uint64_t(uint32_t(corner_normals_[corner] + 1)) : 0;
+            const uint64_t t = uvs ? uint64_t(uint32_t(corner_uvs_[corner] + 1)) : 0;
+            return (n << 32) | t;
+        };
+        const auto set_attributes = [&](uint32_t v, std::size_t corner) {
+            if (normals) mesh_.normals[v] = file_normals_[std::size_t(corner_normals_[corner])];
+            if (uvs) mesh_.uvs[v] = corner_uvs_[corner] >= 0 ? file_uvs_[std::size_t(corner_uvs_[corner])] : glm::vec2(0.0f);
+        };
+        constexpr uint64_t kUnset = ~uint64_t(0);
+        std::vector<uint64_t> key_of_vertex(mesh_.positions.size(), kUnset);
+        std::map<std::pair<uint32_t, uint64_t>, uint32_t> copies;
+        if (normals) mesh_.normals.assign(mesh_.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+        if (uvs) mesh_.uvs.assign(mesh_.positions.size(), glm::vec2(0.0f));
         for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
             for (std::size_t k = 0; k < 3; ++k) {
                 uint32_t& v = mesh_.triangles[t][k];
-                const int32_t n = corner_normals_[3 * t + k];
-                if (normal_of[v] < 0 || normal_of[v] == n) {
-                    normal_of[v] = n;
-                    mesh_.normals[v] = file_normals_[std::size_t(n)];
+                const std::size_t corner = 3 * t + k;
+                const uint64_t key = key_of(corner);
+                if (key_of_vertex[v] == kUnset || key_of_vertex[v] == key) {
+                    key_of_vertex[v] = key;
+                    set_attributes(v, corner);
                     continue;
                 }
-                const auto [it, inserted] =
-                    copies.try_emplace((uint64_t(v) << 32) | uint32_t(n), uint32_t(mesh_.positions.size()));
+                const auto [it, inserted] = copies.try_emplace({v, key}, uint32_t(mesh_.positions.size()));
                 if (inserted) {
                     mesh_.positions.push_back(mesh_.positions[v]);
-                    mesh_.normals.push_back(file_normals_[std::size_t(n)]);
+                    if (normals) mesh_.normals.emplace_back();
+                    if (uvs) mesh_.uvs.emplace_back();
+                    key_of_vertex.push_back(key);
+                    set_attributes(it->second, corner);
                 }
                 v = it->second;
             }
@@ -223,20 +271,23 @@ private:
     uint64_t line_ = 0;
     ImportedMesh mesh_;
     std::vector<glm::vec3> file_normals_;
-    std::size_t texture_coordinates_ = 0;  // counted, for negative indices; not read
+    std::vector<glm::vec2> file_uvs_;
     std::vector<int32_t> corner_normals_;  // per triangle corner, an index into file_normals_ or -1
+    std::vector<int32_t> corner_uvs_;      // per triangle corner, an index into file_uvs_ or -1
     std::vector<std::pair<uint64_t, int64_t>> forward_references_;  // (line, 1-based index)
     std::vector<uint32_t> polygon_;
     std::vector<int32_t> polygon_normals_;
+    std::vector<int32_t> polygon_uvs_;
     std::vector<tinyobj::material_t> materials_;
     std::map<std::string, int> material_ids_;
     std::unordered_set<std::string> material_files_, unknown_materials_;
     uint32_t material_ = ImportedMesh::kNoMaterial;
     bool any_material_ = false;
+    MeshFileUse use_;
 };
 
 }  // namespace
 
-ImportedMesh read_obj_file(const std::string& path) { return ObjReader(path).read(); }
+ImportedMesh read_obj_file(const std::string& path, MeshFileUse use) { return ObjReader(path, use).read(); }
 
 }  // namespace wt

@@ -8,7 +8,9 @@
 
 #include "core/import/material_mapping.h"
 #include "core/materials/microfacet_material.h"
+#include "core/image_io/image_error.h"
 #include "core/regular_file.h"
+#include "core/textures/texture_file.h"
 
 namespace wt {
 
@@ -38,7 +40,20 @@ float roughness_from_phong_exponent(float ns) {
 
 }  // namespace
 
-ImportedMaterial map_obj_material(const tinyobj::material_t& m) {
+int ObjTextures::add_color(const std::string& file) {
+    if (!read_) return -1;
+    const std::filesystem::path relative(file);
+    const std::string resolved = relative.is_absolute() ? file : (base_dir_ / relative).string();
+    if (const auto it = index_of_.find(resolved); it != index_of_.end()) return it->second;
+    TextureImage image;
+    image.name = resolved;
+    image.srgb = colour_file_is_srgb(resolved);
+    image.texels = read_texture_file(resolved);
+    out_.push_back(std::move(image));
+    return index_of_[resolved] = int(out_.size() - 1);
+}
+
+ImportedMaterial map_obj_material(const tinyobj::material_t& m, const std::string& obj_path, ObjTextures& textures) {
     ImportedMaterial out;
     const glm::vec3 kd(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
     const glm::vec3 ks(m.specular[0], m.specular[1], m.specular[2]);
@@ -72,14 +87,27 @@ ImportedMaterial map_obj_material(const tinyobj::material_t& m) {
     }
     out.material.name = m.name;
     emission_from_file(ke, "Ke", out);
+    // map_Kd on the materials whose colour is Kd (Pm 1 loads as a conductor of F0 Kd); a mirror
+    // or glass has none to multiply.
+    const MaterialType type = out.material.type;
+    const bool maps_kd = !m.diffuse_texname.empty() &&
+                         (type == MaterialType::lambertian || type == MaterialType::principled ||
+                          type == MaterialType::conductor || type == MaterialType::rough_conductor);
+    if (maps_kd) {
+        try {
+            out.material.color_texture = textures.add_color(m.diffuse_texname);
+        } catch (const ImageError& e) {
+            throw MeshFileError(obj_path + ": material \"" + m.name + "\": map_Kd: " + e.what());
+        }
+    }
 
-    const struct { const std::string& name; const char* key; } textures[] = {
-        {m.ambient_texname, "map_Ka"},   {m.diffuse_texname, "map_Kd"},     {m.specular_texname, "map_Ks"},
+    const struct { std::string name; const char* key; } unread[] = {
+        {m.ambient_texname, "map_Ka"},   {maps_kd ? std::string() : m.diffuse_texname, "map_Kd"},     {m.specular_texname, "map_Ks"},
         {m.specular_highlight_texname, "map_Ns"}, {m.bump_texname, "bump"}, {m.displacement_texname, "disp"},
         {m.alpha_texname, "map_d"},      {m.reflection_texname, "refl"},    {m.roughness_texname, "map_Pr"},
         {m.metallic_texname, "map_Pm"},  {m.sheen_texname, "map_Ps"},       {m.emissive_texname, "map_Ke"},
         {m.normal_texname, "norm"}};
-    for (const auto& t : textures)
+    for (const auto& t : unread)
         if (!t.name.empty()) out.unmapped.push_back(std::string(t.key) + " texture");
     return out;
 }

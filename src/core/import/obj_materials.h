@@ -1,6 +1,7 @@
 #pragma once
 // MTL files, read by tinyobjloader, and their materials mapped to ours.
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -15,8 +16,28 @@ namespace wt {
 // (refraction): glass with ior Ni, rough at Pr > 0. Otherwise, with the PBR extension's Pr or
 // Pm (either non-zero), glTF's metallic-roughness material of base colour Kd; with a highlight
 // (illum 2 or above and Ks not black) that material as a plastic, metallic 0 and roughness from
-// Ns; else Lambertian with albedo Kd. Ke is the emission. Texture maps are recorded as not mapped.
-ImportedMaterial map_obj_material(const tinyobj::material_t& m);
+// Ns; else Lambertian with albedo Kd. Ke is the emission. map_Kd multiplies Kd (the albedo or
+// the base colour), read relative to the OBJ file's directory through `textures`; a texture that
+// cannot be read is a MeshFileError naming `obj_path`, the material and map_Kd. The other maps
+// are recorded as not mapped.
+class ObjTextures;
+ImportedMaterial map_obj_material(const tinyobj::material_t& m, const std::string& obj_path, ObjTextures& textures);
+
+// The images an OBJ's materials name, each file read once, appended to `out`.
+class ObjTextures {
+public:
+    // read: whether the file's materials are used (MeshFileUse::file_materials).
+    ObjTextures(const std::filesystem::path& base_dir, std::vector<TextureImage>& out, bool read)
+        : base_dir_(base_dir), out_(out), read_(read) {}
+    // Index in `out` of a colour texture of `file` (-1 if not `read`); throws ImageError naming the file.
+    int add_color(const std::string& file);
+
+private:
+    std::filesystem::path base_dir_;
+    std::vector<TextureImage>& out_;
+    std::map<std::string, int> index_of_;
+    bool read_;
+};
 
 // Appends the materials of the MTL file at `path` to `materials`, and their names to `ids` (a
 // name defined twice keeps its first index). The file is read whole, so only a regular file

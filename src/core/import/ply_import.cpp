@@ -306,6 +306,6 @@ private:
 
 }  // namespace
 
-ImportedMesh read_ply_file(const std::string& path) { return PlyReader(path).read(); }
+ImportedMesh read_ply_file(const std::string& path, MeshFileUse) { return PlyReader(path).read(); }
 
 }  // namespace wt

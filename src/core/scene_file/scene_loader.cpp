@@ -26,7 +26,7 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
                                            "\" needs a perspective camera (light paths cannot be joined to an "
                                            "orthographic one); use \"path\"");
     }
-    scene.materials = read_materials(in, in.required(root, "materials", ""), "materials");
+    scene.materials = read_materials(in, in.required(root, "materials", ""), "materials", scene.textures);
     read_shapes(in, in.required(root, "shapes", ""), "shapes", scene, in.optional(root, "meshes"));
     // The list's lights first, then those the mesh files placed (read with the shapes).
     if (const Json* lights = in.optional(root, "lights")) {

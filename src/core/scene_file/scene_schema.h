@@ -16,7 +16,14 @@ namespace wt {
 
 CameraDescription read_camera(const Reader& in, const Json& j, const std::string& path);
 RenderSettings read_render(const Reader& in, const Json& j, const std::string& path);
-std::vector<Material> read_materials(const Reader& in, const Json& j, const std::string& path);
+// Textures the materials name are appended to `textures`.
+std::vector<Material> read_materials(const Reader& in, const Json& j, const std::string& path,
+                                     std::vector<TextureImage>& textures);
+// A colour in [0, 1] ([r, g, b]), or {"texture": FILE, "factor": [r, g, b], "wrap": MODE}: then
+// the image is read (relative to the scene file), appended to `textures`, `texture` set to its
+// index, and the factor (white by default) returned.
+glm::vec3 read_color_or_texture(const Reader& in, const Json& j, const std::string& path, std::vector<TextureImage>& textures,
+                                int32_t& texture);
 // The index of the material named by the string j; fails naming the materials defined.
 uint32_t find_material(const Reader& in, const std::vector<Material>& materials, MaterialNames& names,
                        const Json& j, const std::string& path);

@@ -50,14 +50,18 @@ float read_roughness(const Reader& in, const Json& j, const std::string& path) {
 
 // glTF's metallic-roughness parameters, all three required (glTF's defaults, metallic 1 and
 // roughness 1, are not what a scene file's author would guess); ior 1.5 and no emission by default.
-Material read_principled(const Reader& in, const Json& j, const std::string& path) {
-    const glm::vec3 base_color = in.color(in.required(j, "base_color", path), member_path(path, "base_color"), true);
+Material read_principled(const Reader& in, const Json& j, const std::string& path, std::vector<TextureImage>& textures) {
+    int32_t texture = -1;
+    const glm::vec3 base_color =
+        read_color_or_texture(in, in.required(j, "base_color", path), member_path(path, "base_color"), textures, texture);
     const float metallic = read_fraction(in, in.required(j, "metallic", path), "metallic", path);
     const float roughness = read_fraction(in, in.required(j, "roughness", path), "roughness", path);
     const float ior = j.contains("ior") ? read_ior(in, j, path) : 1.5f;
     const Json* e = in.optional(j, "emission");
-    return principled_material(base_color, metallic, roughness, ior,
-                               e ? in.color(*e, member_path(path, "emission"), false) : glm::vec3(0.0f));
+    Material m = principled_material(base_color, metallic, roughness, ior,
+                                     e ? in.color(*e, member_path(path, "emission"), false) : glm::vec3(0.0f));
+    m.color_texture = texture;
+    return m;
 }
 
 // A conductor's Fresnel term: f0 (Schlick; white if nothing is given) or a complex index
@@ -79,7 +83,8 @@ void read_conductor_fresnel(const Reader& in, const Json& j, const std::string& 
         if (!(m.eta[c] > 0.0f)) in.fail(element_path(member_path(path, "eta"), std::size_t(c)), "must be positive, got " + describe((*eta)[std::size_t(c)]));
 }
 
-Material read_material(const Reader& in, const std::string& name, const Json& j, const std::string& path) {
+Material read_material(const Reader& in, const std::string& name, const Json& j, const std::string& path,
+                       std::vector<TextureImage>& textures) {
     in.expect_object(j, path);
     if (!j.contains("type"))
         in.fail(member_path(path, "type"), std::string("required key is missing (one of ") + kMaterialTypes + ")");
@@ -108,13 +113,13 @@ Material read_material(const Reader& in, const std::string& name, const Json& j,
     }
     if (m.type == MaterialType::principled) {
         const std::string name_kept = m.name;
-        m = read_principled(in, j, path);
+        m = read_principled(in, j, path, textures);
         m.name = name_kept;
         return m;
     }
 
     if (m.type == MaterialType::lambertian || m.type == MaterialType::oren_nayar) {
-        m.albedo = in.color(in.required(j, "albedo", path), member_path(path, "albedo"), true);
+        m.albedo = read_color_or_texture(in, in.required(j, "albedo", path), member_path(path, "albedo"), textures, m.color_texture);
         if (const Json* e = in.optional(j, "emission")) m.emission = in.color(*e, member_path(path, "emission"), false);
     }
     if (m.type == MaterialType::oren_nayar) {
@@ -148,12 +153,13 @@ Material read_material(const Reader& in, const std::string& name, const Json& j,
 
 }  // namespace
 
-std::vector<Material> read_materials(const Reader& in, const Json& j, const std::string& path) {
+std::vector<Material> read_materials(const Reader& in, const Json& j, const std::string& path,
+                                     std::vector<TextureImage>& textures) {
     in.expect_object(j, path);
     std::vector<Material> materials;
     for (const auto& member : j.items()) {
         if (member.key().empty()) in.fail(path, "material names must not be empty");
-        materials.push_back(read_material(in, member.key(), member.value(), member_path(path, member.key())));
+        materials.push_back(read_material(in, member.key(), member.value(), member_path(path, member.key()), textures));
     }
     return materials;
 }

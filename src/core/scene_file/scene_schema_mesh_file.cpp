@@ -40,9 +40,13 @@ std::vector<uint32_t> add_file_materials(const ImportedMesh& mesh, const std::st
         scene.materials.push_back(m);
         return uint32_t(scene.materials.size() - 1);
     };
+    // The file's textures follow the scene's; its materials' indices move with them.
+    const int32_t first_texture = int32_t(scene.textures.size());
+    scene.textures.insert(scene.textures.end(), mesh.textures.begin(), mesh.textures.end());
     std::vector<uint32_t> ours;
     for (std::size_t i = 0; i < mesh.materials.size(); ++i) {
         Material m = mesh.materials[i].material;
+        if (m.color_texture >= 0) m.color_texture += first_texture;
         const std::string file_name = m.name.empty() ? "material " + std::to_string(i) : m.name;
         m.name = file + "/" + file_name;
         ours.push_back(index_of(m));
@@ -59,8 +63,10 @@ std::vector<uint32_t> add_file_materials(const ImportedMesh& mesh, const std::st
 }
 
 // One TriangleMesh per material, in the order the materials first appear, each with only the
-// vertices its triangles use, in the file's order.
-void split_by_material(const ImportedMesh& mesh, const std::vector<uint32_t>& ours, std::vector<TriangleMesh>& out) {
+// vertices its triangles use, in the file's order; texture coordinates only where the material
+// has a texture.
+void split_by_material(const ImportedMesh& mesh, const std::vector<uint32_t>& ours, const std::vector<Material>& materials,
+                       std::vector<TriangleMesh>& out) {
     const uint32_t none = uint32_t(ours.size() - 1);
     const auto group_of = [&](std::size_t t) {
         const uint32_t m = mesh.triangle_materials.empty() ? ImportedMesh::kNoMaterial : mesh.triangle_materials[t];
@@ -85,10 +91,12 @@ void split_by_material(const ImportedMesh& mesh, const std::vector<uint32_t>& ou
         std::sort(used.begin(), used.end());
         TriangleMesh part;
         part.material = ours[g];
+        const bool uvs = !mesh.uvs.empty() && materials[part.material].has_textures();
         for (uint32_t v : used) {
             remap[v] = uint32_t(part.vertices.size());
             part.vertices.push_back(mesh.positions[v]);
             if (!mesh.normals.empty()) part.normals.push_back(mesh.normals[v]);
+            if (uvs) part.uvs.push_back(mesh.uvs[v]);
         }
         for (uint32_t t : triangles_of[g]) {
             const auto& tri = mesh.triangles[t];
@@ -134,7 +142,7 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
 
     ImportedMesh mesh;
     try {
-        mesh = read_mesh_file(resolved);
+        mesh = read_mesh_file(resolved, MeshFileUse{from_file, !from_file && scene.materials[scene_material].has_textures()});
     } catch (const MeshFileError& e) {
         in.fail(file_path, e.what());
     }
@@ -150,11 +158,12 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
     for (const std::string& n : mesh.notes) scene.notes.push_back(note + n);
     // One TriangleMesh per material (from_file), else the whole mesh in the scene's material.
     const auto add_parts = [&](ImportedMesh& m, std::vector<TriangleMesh>& out) {
-        if (from_file) return split_by_material(m, ours, out);
+        if (from_file) return split_by_material(m, ours, scene.materials, out);
         TriangleMesh whole;
         whole.vertices = std::move(m.positions);
         whole.triangles = std::move(m.triangles);
         whole.normals = std::move(m.normals);
+        if (scene.materials[scene_material].has_textures()) whole.uvs = std::move(m.uvs);
         whole.material = scene_material;
         out.push_back(std::move(whole));
     };

@@ -125,6 +125,9 @@ void read_shape(const Reader& in, const Json& j, const std::string& path, SceneD
     }
     TriangleMesh mesh = type == "quad" ? read_quad(in, j, path) : read_mesh(in, j, path);
     mesh.material = material;
+    // A textured quad shows its image upright when its corners run counter-clockwise from the
+    // bottom left, seen from the front: v0 at the image's bottom-left corner (uv (0, 1)).
+    if (type == "quad" && m.has_textures()) mesh.uvs = {{0.0f, 1.0f}, {1.0f, 1.0f}, {1.0f, 0.0f}, {0.0f, 0.0f}};
     if (m.is_emissive()) check_light_triangles(in, mesh, path);
     scene.meshes.push_back(std::move(mesh));
 }

@@ -7,6 +7,7 @@
 
 #include "core/float_minmax.h"
 #include "core/lights/light_emission.h"
+#include "core/material_at_hit.h"
 #include "core/materials/bsdf.h"
 #include "core/materials/shading_normal_bsdf.h"
 #include "core/path_vertex.h"
@@ -123,11 +124,12 @@ std::optional<LightRay> LightPathTracer::start_at_listed_lights(uint64_t key) co
 
 // `vertex` counts the surfaces the path has hit, this one included: a camera path that ends in
 // this light path meets the light after as many vertices of its own.
-LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit) const {
+LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit,
+                                       std::optional<Material>& textured) const {
     const RenderSettings& settings = scene_.settings;
     const Ray& ray = at.ray;
-    const SurfacePoint surface = surface_at(scene_, ray, hit);
-    const Material& m = scene_.materials[surface.material];
+    SurfacePoint surface = surface_at(scene_, ray, hit);  // a normal map may change its shading normal
+    const Material& m = material_at(scene_, hit, surface, ray, false, textured);
     LightVertex out;
     if (!m.is_specular()) {
         // A diffuse first bounce is direct light: the camera paths' light samples estimate it.
@@ -165,11 +167,12 @@ void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, 
     const uint64_t key = light_path_key(scene_.settings.seed, index, sample);
     std::optional<LightRay> ray = starts_at_area_lights_only_ ? start(key) : start_at_listed_lights(key);
     ++counts.light_paths;
+    std::optional<Material> textured;
     for (uint32_t vertex = 1; ray; ++vertex) {
         ++counts.light_rays;
         const Hit hit = closest(ray->ray);
         if (!hit.found()) return;
-        const LightVertex v = at_vertex(key, vertex, *ray, hit);
+        const LightVertex v = at_vertex(key, vertex, *ray, hit, textured);
         bool was_blocked = false;
         if (v.connection) {
             ++counts.camera_connections;

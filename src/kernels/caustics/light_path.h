@@ -91,7 +91,10 @@ public:
     std::optional<LightRay> start(uint64_t key) const;
     std::optional<LightRay> start_at_listed_lights(uint64_t key) const;
     // What the path does at the surface `hit` of `at`, its `vertex`-th (1 for the first hit).
-    LightVertex at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit) const;
+    // `textured`: scratch for the hit's material with its textures looked up (material_at_hit.h),
+    // the caller's, so that a loop over vertices constructs it once.
+    LightVertex at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit,
+                          std::optional<Material>& textured) const;
 
     // Light path `index` of sample `sample`, one ray at a time: appends a splat to `splats` for
     // each diffuse vertex the camera sees, if the path's first bounce was specular. The values are

@@ -78,11 +78,12 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, uin
         intersect_closest_stage(context, ws.rays, ws.hits, false);
         ws.next_rays.count = 0;
         ws.connections.count = 0;
+        std::optional<Material> textured;  // at_vertex's scratch
         for (std::size_t i = 0; i < ws.rays.count; ++i) {
             const Hit hit = ws.hits.hit(i);
             if (!hit.found()) continue;
             const uint32_t slot = ws.rays.path[i];
-            const LightVertex v = tracer_.at_vertex(ws.key[slot], vertex, ws.light_ray(i), hit);
+            const LightVertex v = tracer_.at_vertex(ws.key[slot], vertex, ws.light_ray(i), hit, textured);
             if (v.connection)
                 ws.connections.push(ShadowRay{v.connection->ray, v.connection->tmax, v.connection->splat.value},
                                     v.connection->splat.pixel);

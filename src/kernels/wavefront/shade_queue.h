@@ -8,6 +8,7 @@
 #include "core/first_surface.h"
 #include "core/glossy_light_sampler.h"
 #include "core/lights/listed_light_sampler.h"
+#include "core/material_at_hit.h"
 #include "core/path_vertex.h"
 #include "kernels/photons/photon_gather.h"
 #include "kernels/photons/photon_maps.h"
@@ -20,6 +21,7 @@ namespace wt {
 // emission), so both integrators add a path's terms identically. kRough: the scene has rough
 // (microfacet) materials (Scene::has_rough_materials), whose vertices are tested for at run
 // time; without them the loop compiles as it did before they existed (stage_shade_rough.cpp).
+// Scenes with textures run it too: it looks the materials up through material_at().
 // kListedLights: the scene has a "lights" list (Scene::listed_lights): its light samplers, and
 // what escaping rays see, in place of the area lights' alone (stage_shade_listed_lights.cpp,
 // always with kRough: a scene with a lights list is rare enough to test its materials at run
@@ -31,6 +33,7 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
     const bool has_lights = !scene.lights.empty();
     next_rays.count = 0;
     shadows.count = 0;
+    [[maybe_unused]] std::optional<Material> textured;  // kRough: the hit's material with its textures looked up
     for (std::size_t i = 0; i < rays.count; ++i) {
         const Hit hit = hits.hit(i);
         if constexpr (!kListedLights) {
@@ -48,8 +51,10 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         const uint32_t slot = rays.path[i];
         const PathSeed path{paths.key[slot], paths.sample[slot]};
         const glm::vec3 throughput = rays.throughput(i);
-        const SurfacePoint surface = surface_at(scene, ray, hit);
-        const Material& m = scene.materials[surface.material];
+        SurfacePoint surface = surface_at(scene, ray, hit);  // a normal map may change its shading normal
+        // Textured scenes run the kRough loop (stage_shade.cpp): without it, the loop is as it was.
+        const Material& m = kRough ? material_at(scene, hit, surface, ray, bounce == 0, textured)
+                                   : scene.materials[surface.material];
 
         if constexpr (kRecordAovs) {
             FirstSurface& first = paths.first_surface[slot];

@@ -1,0 +1,26 @@
+#include "core/textures/texture_coordinates.h"
+
+#include <cmath>
+
+namespace wt {
+
+void TextureCoordinateTable::push(glm::vec2 uv0, glm::vec2 uv1, glm::vec2 uv2, float world_area, const glm::vec3& e1,
+                                  const glm::vec3& e2) {
+    const glm::vec2 d1 = uv1 - uv0, d2 = uv2 - uv0;
+    const float uv_area = 0.5f * std::fabs(d1.x * d2.y - d1.y * d2.x);
+    // A zero uv area (no coordinates, or a degenerate mapping) gives -inf: level 0, never NaN.
+    const float density = uv_area > 0.0f && world_area > 0.0f ? 0.5f * std::log2(uv_area / world_area) : -INFINITY;
+    // e1 = du1 T + dv1 B', e2 = du2 T + dv2 B' (B' = dP/dv), solved by Cramer's rule.
+    glm::vec3 tangent(0.0f), bitangent(0.0f);
+    const float det = (uv1.x - uv0.x) * (uv2.y - uv0.y) - (uv2.x - uv0.x) * (uv1.y - uv0.y);
+    if (det != 0.0f && std::isfinite(1.0f / det)) {
+        const float r = 1.0f / det;
+        tangent = (e1 * (uv2.y - uv0.y) - e2 * (uv1.y - uv0.y)) * r;
+        bitangent = -(e2 * (uv1.x - uv0.x) - e1 * (uv2.x - uv0.x)) * r;
+        if (!std::isfinite(tangent.x + tangent.y + tangent.z + bitangent.x + bitangent.y + bitangent.z))
+            tangent = bitangent = glm::vec3(0.0f);
+    }
+    records_.push_back({uv0, uv1, uv2, std::isfinite(density) ? density : -INFINITY, tangent, bitangent});
+}
+
+}  // namespace wt

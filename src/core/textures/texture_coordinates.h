@@ -1,0 +1,50 @@
+#pragma once
+// Per-triangle texture coordinates (glTF's TEXCOORD_0, OBJ's vt), interpolated at a hit. Built
+// only when some material of the scene has a texture: any other scene stores nothing and no
+// kernel reads it.
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace wt {
+
+class TextureCoordinateTable {
+public:
+    bool empty() const { return records_.empty(); }
+    std::size_t size() const { return records_.size(); }
+    std::size_t bytes() const { return records_.capacity() * sizeof(Record); }
+
+    // Indexed like TriangleSoA: one push per stored triangle, in its order. world_area is the
+    // triangle's area, e1 and e2 its edges v1 - v0 and v2 - v0; a triangle without coordinates
+    // pushes (0, 0) thrice.
+    void push(glm::vec2 uv0, glm::vec2 uv1, glm::vec2 uv2, float world_area, const glm::vec3& e1 = glm::vec3(0.0f),
+              const glm::vec3& e2 = glm::vec3(0.0f));
+
+    // The coordinates of triangle i at barycentrics (u, v) (the weights of vertices 1 and 2).
+    glm::vec2 at(std::size_t i, float u, float v) const {
+        const Record& r = records_[i];
+        return (1.0f - u - v) * r.uv0 + u * r.uv1 + v * r.uv2;
+    }
+    // 0.5 log2(texture-space area / world area) of triangle i, in units of the texture's extent:
+    // Akenine-Moller et al. 2019's (eq. 34) triangle term of the ray cone's level of detail; -inf
+    // for a triangle without coordinates (level 0).
+    float log2_density(std::size_t i) const { return records_[i].log2_density; }
+    // Triangle i's tangent frame for normal maps: dP/du and -dP/dv (glTF's normal maps have +y
+    // up in the image, where v grows downwards), solved from its edges and their coordinate
+    // differences (Lengyel 2001); zero where the coordinates are degenerate (no normal map).
+    const glm::vec3& tangent(std::size_t i) const { return records_[i].tangent; }
+    const glm::vec3& bitangent(std::size_t i) const { return records_[i].bitangent; }
+
+private:
+    struct Record {
+        glm::vec2 uv0, uv1, uv2;
+        float log2_density;
+        glm::vec3 tangent, bitangent;
+    };
+    std::vector<Record> records_;
+};
+
+}  // namespace wt

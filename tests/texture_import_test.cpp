@@ -1,0 +1,292 @@
+// Textures from glTF files: an image inside a .glb, in a data URI and in an external PNG, each
+// read through the image module (the test writes its PNGs with it); a .glb's half-black,
+// half-white texture renders each half as the untextured black and white materials do, bit for
+// bit; and bad images (missing, corrupt, too large) are errors naming the file, the material
+// and the field, while a non-power-of-two image is a texture like any other.
+
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "core/film/image_output.h"
+#include "core/scene_file/scene_error.h"
+#include "core/textures/texture_file.h"
+#include "import_gltf_files.h"
+#include "lights_test_scenes.h"
+#include "render_helpers.h"
+
+namespace wt {
+namespace {
+
+using test::GltfFile;
+using Json = nlohmann::json;
+
+class TextureImport : public test::ImportTest {
+protected:
+    // A PNG of width x height, black where x < width / 2 and white elsewhere, as a file's bytes.
+    std::string half_black_png(int width, int height, const std::string& name = "texture.png") const {
+        std::vector<float> rgb;
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x)
+                for (int c = 0; c < 3; ++c) rgb.push_back(x < width / 2 ? 0.0f : 1.0f);
+        std::filesystem::create_directories(std::filesystem::path(path(name)).parent_path());
+        write_image(path(name), width, height, rgb);
+        std::ifstream in(path(name), std::ios::binary);
+        std::stringstream bytes;
+        bytes << in.rdbuf();
+        return bytes.str();
+    }
+
+    // A square of side 8 in the z = 0 plane facing +z, TEXCOORD_0 over [0, 1]^2 (v = 0 at
+    // y = +4), its material principled (metallic 0, roughness 0.5) with baseColorTexture 0 whose
+    // image is `image` (a bufferView's PNG bytes when `png` is given). Returns the file's JSON
+    // and fills `file`'s buffer.
+    static Json square(GltfFile& file, const Json& image, const std::string& png = "") {
+        const int positions = file.positions({{-4, -4, 0}, {4, -4, 0}, {4, 4, 0}, {-4, 4, 0}});
+        test::Bytes uv;
+        for (float t : {0.0f, 1.0f, 1.0f, 1.0f, 1.0f, 0.0f, 0.0f, 0.0f}) uv.put(t);
+        const int uvs = file.accessor({{"bufferView", file.view(uv.str())}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}});
+        const int indices = file.indices({0, 1, 2, 0, 2, 3}, 5125);
+        file.primitive({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"indices", indices}, {"material", 0}});
+        Json img = image;
+        if (!png.empty()) img = {{"bufferView", file.view(png)}, {"mimeType", "image/png"}};
+        Json j = file.json("");
+        j["materials"] = {{{"name", "panel"},
+                           {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}}};
+        j["textures"] = {{{"source", 0}, {"sampler", 0}}};
+        j["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33648}}};  // CLAMP_TO_EDGE, MIRRORED_REPEAT
+        j["images"] = {img};
+        return j;
+    }
+
+    std::string gltf_text(const GltfFile& file, Json j) const {
+        j["buffers"][0]["uri"] = "data:application/octet-stream;base64," + test::base64(file.bin());
+        return j.dump();
+    }
+
+    SceneDescription load_from_file(const std::string& name) const {
+        return load(R"({"type": "mesh_file", "file": ")" + name + R"(", "material": "from_file"})");
+    }
+
+    std::string texture_error(const std::string& name) const {
+        try {
+            load_from_file(name);
+        } catch (const SceneError& e) {
+            return e.what();
+        }
+        ADD_FAILURE() << "no SceneError for " << name;
+        return "";
+    }
+};
+
+// The scene seen from 2 above, under a constant environment of radiance 1 (texture_render_test's view).
+void view_from_above(SceneDescription& d) {
+    d.lights = {test::constant_environment(glm::vec3(1.0f))};
+    d.camera.eye = glm::vec3(0.0f, 0.0f, 2.0f);
+    d.camera.look_at = glm::vec3(0.0f);
+    d.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    d.camera.fov_degrees = 40.0f;
+    d.settings.width = d.settings.height = 16;
+    d.settings.spp = 8;
+}
+
+// Seen from above, the pixels that see one half of a half-black, half-white texture alone
+// (columns 0-1 and 14-15, texture_render_test says why) have exactly the bits of the same scene
+// rendered untextured in that colour; and the image is the same for every schedule.
+void expect_halves_render_as_their_colours(SceneDescription d) {
+    view_from_above(d);
+    const Film film = test::render_film(d, Integrator::wavefront).film;
+    for (float colour : {0.0f, 1.0f}) {
+        SceneDescription plain = d;
+        plain.textures.clear();
+        for (Material& m : plain.materials) {
+            if (m.color_texture < 0) continue;
+            m.color_texture = -1;
+            (m.type == MaterialType::principled ? m.base_color : m.albedo) *= colour;
+        }
+        const Film expected = test::render_film(plain, Integrator::wavefront).film;
+        for (int y = 0; y < 16; ++y)
+            for (int x : colour == 0.0f ? std::vector<int>{0, 1} : std::vector<int>{14, 15}) {
+                const uint32_t p = uint32_t(y * 16 + x);
+                EXPECT_EQ(film.pixel_mean(p), expected.pixel_mean(p)) << x << "," << y << " colour " << colour;
+            }
+    }
+    test::expect_same_film_for_any_schedule(d, film);
+}
+
+TEST_F(TextureImport, GlbImageRendersEachHalfAsItsColour) {
+    GltfFile file;
+    const Json j = square(file, {}, half_black_png(8, 8));
+    write("panel.glb", test::glb(j.dump(), file.bin()));
+    SceneDescription d = load_from_file("panel.glb");
+    ASSERT_EQ(d.textures.size(), 1u);
+    const TextureImage& t = d.textures[0];
+    EXPECT_TRUE(t.srgb);
+    EXPECT_EQ(t.wrap_s, TextureWrap::clamp);
+    EXPECT_EQ(t.wrap_t, TextureWrap::mirror);
+    ASSERT_EQ(t.texels->width, 8);
+    EXPECT_EQ(t.texels->rgba[0], glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    EXPECT_EQ(t.texels->rgba[7], glm::vec4(1.0f));
+    EXPECT_NE(t.name.find("baseColorTexture"), std::string::npos) << t.name;
+    // No note says the texture is not mapped.
+    for (const std::string& note : d.notes) EXPECT_EQ(note.find("baseColorTexture"), std::string::npos) << note;
+
+    expect_halves_render_as_their_colours(d);
+}
+
+TEST_F(TextureImport, MetallicRoughnessTextureAndTextureTransform) {
+    GltfFile file;
+    Json j = square(file, {}, half_black_png(4, 4));
+    j["textures"].push_back({{"source", 0}});
+    Json& pbr = j["materials"][0]["pbrMetallicRoughness"];
+    pbr["metallicFactor"] = 1.0;  // would load as a conductor without the texture
+    pbr["metallicRoughnessTexture"] = {{"index", 1}};
+    j["materials"][0]["normalTexture"] = {{"index", 1}, {"scale", 0.5}};
+    pbr["baseColorTexture"]["extensions"] = {
+        {"KHR_texture_transform", {{"offset", {0.25, 0.5}}, {"rotation", 0.5}, {"scale", {2.0, 3.0}}}}};
+    write("panel.glb", test::glb(j.dump(), file.bin()));
+    const SceneDescription d = load_from_file("panel.glb");
+    ASSERT_EQ(d.textures.size(), 3u);
+    const Material* panel = nullptr;
+    for (const Material& m : d.materials)
+        if (m.name.find("panel") != std::string::npos) panel = &m;
+    ASSERT_NE(panel, nullptr);
+    EXPECT_EQ(panel->type, MaterialType::principled);
+    EXPECT_EQ(panel->metallic, 1.0f);
+    ASSERT_GE(panel->color_texture, 0);
+    ASSERT_GE(panel->metallic_roughness_texture, 0);
+    const TextureImage& colour = d.textures[std::size_t(panel->color_texture)];
+    const TextureImage& data = d.textures[std::size_t(panel->metallic_roughness_texture)];
+    EXPECT_TRUE(colour.srgb);
+    EXPECT_FALSE(data.srgb);  // metallic and roughness are data
+    EXPECT_EQ(colour.texels, data.texels);  // one image, decoded once
+    EXPECT_EQ(colour.offset, glm::vec2(0.25f, 0.5f));
+    EXPECT_EQ(colour.scale, glm::vec2(2.0f, 3.0f));
+    EXPECT_EQ(colour.rotation, 0.5f);
+    EXPECT_EQ(data.scale, glm::vec2(1.0f));
+    ASSERT_GE(panel->normal_texture, 0);  // a normal map: data, with its scale
+    EXPECT_FALSE(d.textures[std::size_t(panel->normal_texture)].srgb);
+    EXPECT_EQ(panel->normal_scale, 0.5f);
+    for (const std::string& note : d.notes) {
+        EXPECT_EQ(note.find("metallicRoughnessTexture"), std::string::npos) << note;
+        EXPECT_EQ(note.find("KHR_texture_transform"), std::string::npos) << note;
+        EXPECT_EQ(note.find("normalTexture"), std::string::npos) << note;
+    }
+    // A transform whose values are not numbers names them.
+    pbr["baseColorTexture"]["extensions"]["KHR_texture_transform"]["scale"] = {"big", 1};
+    write("bad.glb", test::glb(j.dump(), file.bin()));
+    test::expect_mesh_error(texture_error("bad.glb"), "bad.glb", "baseColorTexture: KHR_texture_transform.scale is not a finite number");
+}
+
+TEST_F(TextureImport, DataUriAndExternalImagesAndNonPowerOfTwo) {
+    const std::string png = half_black_png(6, 3, "odd.png");  // 6 x 3: not a power of two
+    for (const Json& image : {Json{{"uri", "data:image/png;base64," + test::base64(png)}}, Json{{"uri", "odd.png"}}}) {
+        GltfFile file;
+        write("panel.gltf", gltf_text(file, square(file, image)));
+        const SceneDescription d = load_from_file("panel.gltf");
+        ASSERT_EQ(d.textures.size(), 1u);
+        EXPECT_EQ(d.textures[0].texels->width, 6);
+        EXPECT_EQ(d.textures[0].texels->height, 3);
+        EXPECT_EQ(d.textures[0].texels->rgba[5], glm::vec4(1.0f));
+        const Scene scene = build_scene(d);
+        ASSERT_EQ(scene.textures.size(), 1u);
+        EXPECT_EQ(scene.textures[0].level_count(), 3u);  // 6x3, 3x1, 1x1
+        // Its memory: three levels of RGBA floats.
+        EXPECT_GE(scene.textures[0].bytes(), (18u + 3u + 1u) * sizeof(glm::vec4));
+    }
+}
+
+TEST_F(TextureImport, BadImagesNameTheFileMaterialAndField) {
+    const auto expect_error = [&](const Json& image, const std::string& png, const std::string& problem) {
+        GltfFile file;
+        const Json j = square(file, image, png);
+        write("panel.glb", test::glb(j.dump(), file.bin()));
+        const std::string message = texture_error("panel.glb");
+        test::expect_mesh_error(message, "panel.glb", problem);
+        EXPECT_NE(message.find("material \"panel\": baseColorTexture"), std::string::npos) << message;
+    };
+    expect_error({{"uri", "missing.png"}}, "", "image 0 (missing.png): the file is missing or unreadable");
+    expect_error({}, "this is not an image at all", "not a PNG or JPEG image");
+    std::string truncated = half_black_png(8, 8);
+    truncated.resize(truncated.size() / 2);
+    expect_error({}, truncated, "image 0");
+    // 16385 pixels wide: refused from the header, whatever the file's size.
+    expect_error({}, half_black_png(16385, 1), "16385 x 1 pixels, more than the 16384 per side");
+}
+
+// A square like square()'s in OBJ: vt with v up (flipped on reading), its material's map_Kd.
+TEST_F(TextureImport, ObjMapKdAndTextureCoordinates) {
+    half_black_png(8, 8, "maps/texture.png");
+    write("panel.mtl", "newmtl panel\nKd 1 1 1\nmap_Kd maps/texture.png\n");
+    write("panel.obj", "mtllib panel.mtl\nv -4 -4 0\nv 4 -4 0\nv 4 4 0\nv -4 4 0\n"
+                       "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl panel\nf 1/1 2/2 3/3 4/4\n");
+    const SceneDescription d = load_from_file("panel.obj");
+    ASSERT_EQ(d.textures.size(), 1u);
+    ASSERT_EQ(d.meshes.size(), 1u);
+    ASSERT_EQ(d.meshes[0].uvs.size(), 4u);
+    EXPECT_EQ(d.meshes[0].uvs[0], glm::vec2(0.0f, 1.0f));  // vt 0 0: the image's bottom-left corner
+    EXPECT_EQ(d.meshes[0].uvs[2], glm::vec2(1.0f, 0.0f));
+    for (const std::string& note : d.notes) EXPECT_EQ(note.find("map_Kd"), std::string::npos) << note;
+    expect_halves_render_as_their_colours(d);
+
+    // A corner with another coordinate splits its vertex: two faces sharing vertex 1 with vt 1 and 2.
+    write("split.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvt 1 1\nf 1/1 2/1 3/1\nf 1/2 2/2 4/2\n");
+    write("split.mtl", "");
+    const SceneDescription split = load(R"({"type": "mesh_file", "file": "split.obj", "material": "textured"})",
+                                        R"({"textured": {"type": "lambertian", "albedo": {"texture": "maps/texture.png"}}})");
+    ASSERT_EQ(split.meshes.size(), 1u);
+    EXPECT_EQ(split.meshes[0].vertices.size(), 6u);  // 4 positions, 2 of them with a second coordinate
+    EXPECT_EQ(split.meshes[0].uvs.size(), 6u);
+
+    write("broken.mtl", "newmtl panel\nKd 1 1 1\nmap_Kd nowhere.png\n");
+    write("broken.obj", "mtllib broken.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl panel\nf 1/1 2/1 3/1\n");
+    const std::string message = texture_error("broken.obj");
+    test::expect_mesh_error(message, "broken.obj", "material \"panel\": map_Kd: ");
+    EXPECT_NE(message.find("nowhere.png"), std::string::npos) << message;
+}
+
+TEST_F(TextureImport, SceneFileAlbedoTextureOnAQuad) {
+    half_black_png(8, 8);
+    const std::string quad = R"({"type": "quad", "vertices": [[-4, -4, 0], [4, -4, 0], [4, 4, 0], [-4, 4, 0]], "material": "panel"})";
+    const SceneDescription d = load(quad, R"({"panel": {"type": "lambertian", "albedo": {"texture": "texture.png", "wrap": "clamp"}}})");
+    ASSERT_EQ(d.textures.size(), 1u);
+    EXPECT_EQ(d.textures[0].wrap_s, TextureWrap::clamp);
+    EXPECT_TRUE(d.textures[0].srgb);  // a PNG; an EXR's values are linear
+    EXPECT_FALSE(colour_file_is_srgb("wood.EXR"));
+    EXPECT_FALSE(colour_file_is_srgb("sky.hdr"));
+    EXPECT_TRUE(colour_file_is_srgb("wood.jpg"));
+    EXPECT_EQ(d.materials[0].albedo, glm::vec3(1.0f));  // no factor: white
+    EXPECT_EQ(d.meshes[0].uvs.size(), 4u);
+    expect_halves_render_as_their_colours(d);
+    // The factor multiplies, on principled materials too.
+    const SceneDescription p = load(quad, R"({"panel": {"type": "principled", "metallic": 0, "roughness": 0.5,
+        "base_color": {"texture": "texture.png", "factor": [0.5, 0.25, 1]}}})");
+    EXPECT_EQ(p.materials[0].base_color, glm::vec3(0.5f, 0.25f, 1.0f));
+    EXPECT_EQ(p.materials[0].color_texture, 0);
+
+    // Bad input: the message names the field and the file.
+    const auto error_for = [&](const std::string& materials) {
+        try {
+            load(quad, materials);
+        } catch (const SceneError& e) {
+            return std::string(e.what());
+        }
+        ADD_FAILURE() << "no SceneError for " << materials;
+        return std::string();
+    };
+    std::string message = error_for(R"({"panel": {"type": "lambertian", "albedo": {"texture": "wood.png"}}})");
+    EXPECT_NE(message.find("materials.panel.albedo.texture"), std::string::npos) << message;
+    EXPECT_NE(message.find("wood.png"), std::string::npos) << message;
+    write("corrupt.png", "\x89PNG\r\n\x1a\n but nothing after the signature");
+    message = error_for(R"({"panel": {"type": "lambertian", "albedo": {"texture": "corrupt.png"}}})");
+    EXPECT_NE(message.find("materials.panel.albedo.texture"), std::string::npos) << message;
+    EXPECT_NE(message.find("corrupt.png"), std::string::npos) << message;
+    message = error_for(R"({"panel": {"type": "lambertian", "albedo": {"texture": "texture.png", "wrap": "tile"}}})");
+    EXPECT_NE(message.find("materials.panel.albedo.wrap"), std::string::npos) << message;
+    message = error_for(R"({"panel": {"type": "lambertian", "albedo": {"file": "texture.png"}}})");
+    EXPECT_NE(message.find("materials.panel.albedo"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace wt
