@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -147,6 +148,19 @@ Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTe
         const float pad = rounding_pad(tree.nodes[tree.root].box(), eye);
         bvh.root_ = options.node_width == 4 ? collapse<4>(records.get(), tree, refs, pad, bvh.nodes4_, bvh.primitives_, bvh.stats_, *pool)
                                             : collapse<8>(records.get(), tree, refs, pad, bvh.nodes8_, bvh.primitives_, bvh.stats_, *pool);
+    } else {
+        // Nothing to hit: the root is one node whose every slot is empty, which the traversals
+        // walk as any node and enter nowhere. A leaf reference there would name a block that
+        // does not exist (the offset from a null pointer is undefined behaviour).
+        const auto add_empty_root = [&](auto& nodes) {
+            nodes.emplace_back();
+            for (int row = 0; row < 6; ++row)  // min rows +inf, max rows -inf: an empty box
+                for (float& bound : nodes[0].bounds[row]) bound = (row & 1) ? -INFINITY : INFINITY;
+            for (uint32_t& child : nodes[0].child) child = kBvhEmptyChild;
+        };
+        if (options.node_width == 4) add_empty_root(bvh.nodes4_);
+        else add_empty_root(bvh.nodes8_);
+        bvh.root_ = 0;
     }
     bvh.stats_.primitive_count = refs.size();
     bvh.stats_.node_bytes = bvh.nodes4_.size() * sizeof(BvhNode<4>) + bvh.nodes8_.size() * sizeof(BvhNode<8>);

@@ -69,11 +69,10 @@ template <TriangleTest T, SphereTest S, Query Q, int N>
 WT_KERNEL_INLINE void test_leaf_packet(const BvhView& bvh, uint32_t ref, const RayPacket<N>& r, const TriangleRays<T, N>& tr,
                                        TreePacketState<Q, N>& state) {
     constexpr uint32_t rows = T == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
-    const BvhLeafKind kind = BvhLeafKind((ref >> kBvhKindShift) & 3u);
-    if (uint32_t(kind) > uint32_t(BvhLeafKind::sphere)) return;  // kBvhEmptyChild: see test_leaf (bvh_traverse.h)
     const uint32_t first = ref & kBvhFirstMask;
     const uint32_t k = ((ref >> kBvhCountShift) & 7u) + 1u;
     const float* block = bvh.leaves + std::size_t(first) * rows;
+    const BvhLeafKind kind = BvhLeafKind((ref >> kBvhKindShift) & 3u);
     if (kind == BvhLeafKind::sphere) {
         for (uint32_t l = 0; l < k && !state.done(); ++l) {
             vfloat<N> t;

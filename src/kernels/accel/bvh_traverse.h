@@ -73,16 +73,12 @@ WT_KERNEL_INLINE uint32_t enter_children(const BvhNode<W>& node, const BoxRay<V>
 template <TriangleTest T, SphereTest S, Query Q, int L>
 WT_KERNEL_INLINE void test_leaf(const BvhView& bvh, uint32_t ref, const SingleRay<L>& ray, const TriangleRays<T, L>& tri_ray,
                       SingleRayState<Q, L>& state) {
-    const BvhLeafKind kind = BvhLeafKind((ref >> kBvhKindShift) & 3u);
-    // kBvhEmptyChild, the root of a scene with nothing to hit: its index bits are no block's,
-    // and an offset from the null leaves pointer would be undefined behaviour.
-    if (uint32_t(kind) > uint32_t(BvhLeafKind::sphere)) return;
     const uint32_t first = ref & kBvhFirstMask;
     const uint32_t count = ((ref >> kBvhCountShift) & 7u) + 1u;
     constexpr uint32_t rows = T == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
     const float* block = bvh.leaves + std::size_t(first) * rows;
     const TriangleBlock<T> triangles{block, count};
-    switch (kind) {
+    switch (BvhLeafKind((ref >> kBvhKindShift) & 3u)) {
         case BvhLeafKind::parallelogram:
             // Only Moller-Trumbore scenes have parallelograms (build_scene splits quads otherwise).
             if constexpr (T == TriangleTest::moller_trumbore)
@@ -94,7 +90,7 @@ WT_KERNEL_INLINE void test_leaf(const BvhView& bvh, uint32_t ref, const SingleRa
         case BvhLeafKind::sphere:
             test_sphere_run<S>(ray, SphereBlock{block, count}, count, state);
             break;
-        default:
+        default:  // kBvhEmptyChild: the root of a scene with nothing to hit
             break;
     }
 }
