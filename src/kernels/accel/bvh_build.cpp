@@ -150,8 +150,9 @@ Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTe
                                             : collapse<8>(records.get(), tree, refs, pad, bvh.nodes8_, bvh.primitives_, bvh.stats_, *pool);
     } else {
         // Nothing to hit: the root is one node whose every slot is empty, which the traversals
-        // walk as any node and enter nowhere. A leaf reference there would name a block that
-        // does not exist (the offset from a null pointer is undefined behaviour).
+        // walk as any node, instead of a leaf reference that names no block. (A ray with a zero
+        // direction component can still enter an empty slot through the slab test's NaN: the
+        // leaf test then ignores it, but forms its pointer first; clang's UBSan reports that.)
         const auto add_empty_root = [&](auto& nodes) {
             nodes.emplace_back();
             for (int row = 0; row < 6; ++row)  // min rows +inf, max rows -inf: an empty box
