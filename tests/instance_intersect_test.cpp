@@ -130,9 +130,13 @@ void compare_with_flattened(TriangleTest test, std::size_t ray_count) {
                 // Shading normals at the same point of the triangle (the instanced hit's
                 // barycentrics, swapped where the flattened copy's winding was reversed), so
                 // only the placement of the vertex normals is compared.
-                const float (*m)[4] = instanced.instances.instance_of(ha.prim).to_world.m;
-                const float det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                                  m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+                // Only an instanced triangle has a placement (instance_of is for those ids alone).
+                float det = 1.0f;
+                if (ha.prim >= instanced.instances.first_id) {
+                    const float (*m)[4] = instanced.instances.instance_of(ha.prim).to_world.m;
+                    det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                          m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+                }
                 Hit same_point = hb;
                 same_point.u = det < 0.0f ? ha.v : ha.u, same_point.v = det < 0.0f ? ha.u : ha.v;
                 const SurfacePoint sc = surface_at(flat, ray, same_point);
