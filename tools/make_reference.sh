@@ -13,9 +13,9 @@ set -euo pipefail
 wavetrace=$1 scene=$2 out=$3 spp=$4 width=$5 height=$6
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-accurate=(--fresnel exact --triangle-test watertight --sphere-test cancellation_free --caustics light_tracing)
+reference_options=(--fresnel exact --triangle-test watertight --sphere-test cancellation_free --caustics light_tracing)
 for seed in 1 2; do
-  "$wavetrace" render "$scene" --width "$width" --height "$height" --spp "$spp" --seed "$seed" "${accurate[@]}" \
+  "$wavetrace" render "$scene" --width "$width" --height "$height" --spp "$spp" --seed "$seed" "${reference_options[@]}" \
     -o "$work/half$seed.exr"
 done
 oiiotool --nosoftwareattrib "$work/half1.exr" "$work/half2.exr" --add --mulc 0.5 -d half --compression zip -o "$work/reference.exr"
