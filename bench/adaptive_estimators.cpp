@@ -30,7 +30,7 @@
 
 #include "core/film/film.h"
 #include "core/image_io/image_input.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "core/scene_file/scene_loader.h"
 #include "kernels/adaptive/decision_schedule.h"
 #include "kernels/adaptive/stopping_rule.h"

@@ -12,7 +12,7 @@
 #include <benchmark/benchmark.h>
 
 #include "core/checkpoint/checkpoint.h"
-#include "core/version.h"
+#include "core/system/version.h"
 
 namespace wt {
 namespace {

@@ -44,9 +44,9 @@
 
 #include "bench_scene.h"
 #include "command_line.h"
-#include "core/aligned_vector.h"
-#include "core/ray.h"
-#include "core/thread_pool.h"
+#include "core/base/aligned_vector.h"
+#include "core/base/ray.h"
+#include "core/system/thread_pool.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "scene_workloads.h"

@@ -18,7 +18,7 @@
 #include "bench_scene.h"
 #include "command_line.h"
 #include "core/film/film.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/progressive_render.h"
 #include "kernels/renderer.h"

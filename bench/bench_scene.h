@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 #include "displaced_sphere.h"
 #include "workloads.h"
 

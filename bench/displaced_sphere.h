@@ -12,7 +12,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt::bench {
 

@@ -7,7 +7,7 @@
 
 #include <embree3/rtcore.h>
 
-#include "core/ray.h"
+#include "core/base/ray.h"
 
 namespace wt::bench {
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <memory>
 
-#include "core/scene.h"
-#include "kernels/soa_views.h"
+#include "core/scene/scene.h"
+#include "kernels/primitives/soa_views.h"
 
 namespace wt::bench {
 

@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt::bench {
 

@@ -21,7 +21,7 @@
 
 #include "core/film/aov.h"
 #include "core/film/film.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "core/scene_file/scene_loader.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "displaced_sphere.h"

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "kernels/accel/bvh.h"
 #include "workloads.h"
 

@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/path_vertex.h"
+#include "core/path/path_vertex.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/sampling.h"
 

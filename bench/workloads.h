@@ -14,10 +14,10 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/aligned_vector.h"
-#include "core/ray.h"
-#include "core/scene.h"
-#include "kernels/soa_views.h"
+#include "core/base/aligned_vector.h"
+#include "core/base/ray.h"
+#include "core/scene/scene.h"
+#include "kernels/primitives/soa_views.h"
 
 namespace wt::bench {
 

@@ -15,8 +15,8 @@
 
 #include "core/checkpoint/checkpoint.h"
 #include "core/film/aov.h"
-#include "core/scene_hash.h"
-#include "core/version.h"
+#include "core/description/scene_hash.h"
+#include "core/system/version.h"
 #include "kernels/adaptive/decision_schedule.h"
 #include "render_helpers.h"
 #include "test_scenes.h"

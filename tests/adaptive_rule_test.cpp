@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "core/film/film.h"
-#include "core/thread_pool.h"
+#include "core/system/thread_pool.h"
 #include "kernels/adaptive/decision_schedule.h"
 #include "kernels/adaptive/pixel_error.h"
 #include "kernels/adaptive/stopping_rule.h"

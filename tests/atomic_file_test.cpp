@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/atomic_file.h"
+#include "core/system/atomic_file.h"
 
 namespace wt {
 namespace {

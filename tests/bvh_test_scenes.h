@@ -11,10 +11,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/ray_offset.h"
-#include "core/scene.h"
+#include "core/base/ray_offset.h"
+#include "core/scene/scene.h"
 #include "kernels/accel/bvh_view.h"
-#include "kernels/soa_views.h"
+#include "kernels/primitives/soa_views.h"
 #include "kernel_test_helpers.h"
 #include "test_scenes.h"
 

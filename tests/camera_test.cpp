@@ -1,4 +1,4 @@
-// The cameras (core/camera.h): the thin lens against the pinhole and against its own inverse,
+// The cameras (core/camera/camera.h): the thin lens against the pinhole and against its own inverse,
 // the orthographic window, the lens's sampler pattern, and the camera section's bad input.
 
 #include <cmath>
@@ -9,8 +9,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/camera.h"
-#include "core/scene.h"
+#include "core/camera/camera.h"
+#include "core/scene/scene.h"
 #include "core/sampling/samplers.h"
 #include "camera_importance.h"
 #include "scene_test_helpers.h"

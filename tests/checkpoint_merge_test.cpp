@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "core/checkpoint/checkpoint_merge.h"
-#include "core/version.h"
+#include "core/system/version.h"
 
 namespace wt {
 namespace {

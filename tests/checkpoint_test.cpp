@@ -15,11 +15,11 @@
 #include <gtest/gtest.h>
 #include <xxhash.h>
 
-#include "core/atomic_file.h"
+#include "core/system/atomic_file.h"
 #include "core/checkpoint/checkpoint.h"
 #include "core/checkpoint/checkpoint_format.h"
 #include "core/checkpoint/checkpoint_match.h"
-#include "core/version.h"
+#include "core/system/version.h"
 
 namespace wt {
 namespace {

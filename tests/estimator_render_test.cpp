@@ -1,4 +1,4 @@
-// The estimator options (core/estimator.h) in the whole renderer: each one in the white
+// The estimator options (core/path/estimator.h) in the whole renderer: each one in the white
 // furnace, bit-identical between the integrators and for any thread count, in statistical
 // agreement with the default on the hexroom; MIS against an analytic answer and the variance of
 // its two strategies; the indirect clamp's bias where it should be and nowhere else.
@@ -171,7 +171,7 @@ TEST(MultipleImportance, BeatsTheWorseStrategyOnSmallAndLargeLights) {
     }
 }
 
-// The clamp touches indirect light only (see clamp_indirect in core/estimator.h).
+// The clamp touches indirect light only (see clamp_indirect in core/path/estimator.h).
 TEST(ClampIndirect, ANeverBindingClampGivesTheSameBits) {
     const SceneDescription d = test::hexroom(24, 24, 8, 3);
     const test::RenderedFilm off = test::render_film(d, Integrator::wavefront);

@@ -18,7 +18,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "instance_scenes.h"
 #include "kernels/accel/scene_bvh.h"
 #include "kernels/isa/intersect_dispatch.h"

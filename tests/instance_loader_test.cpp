@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/scene.h"
-#include "core/scene_hash.h"
+#include "core/scene/scene.h"
+#include "core/description/scene_hash.h"
 #include "scene_test_helpers.h"
 
 namespace {

@@ -11,7 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt::test {
 

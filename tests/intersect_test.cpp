@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "kernels/primitive_intersect.h"
-#include "kernels/scene_intersect.h"
+#include "kernels/primitives/primitive_intersect.h"
+#include "kernels/accel/scene_intersect.h"
 
 namespace wt {
 namespace {

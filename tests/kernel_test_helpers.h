@@ -7,9 +7,9 @@
 #include <limits>
 #include <vector>
 
-#include "core/accuracy.h"
-#include "core/ray.h"
-#include "kernels/soa_views.h"
+#include "core/base/accuracy.h"
+#include "core/base/ray.h"
+#include "kernels/primitives/soa_views.h"
 
 namespace wt::test {
 

@@ -11,9 +11,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/camera.h"
+#include "core/camera/camera.h"
 #include "core/checkpoint/checkpoint.h"
-#include "core/version.h"
+#include "core/system/version.h"
 #include "kernels/caustics/light_path.h"
 #include "camera_importance.h"
 #include "mirror_caustic.h"

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "core/film/image_output.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "scene_test_helpers.h"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt::test {
 

@@ -7,8 +7,8 @@
 
 #include "kernels/caustics/light_tracing_pass.h"
 #include "kernels/memory_estimate.h"
-#include "kernels/photons/photon_memory.h"
-#include "kernels/wavefront/tiles.h"
+#include "kernels/caustics/photon_memory.h"
+#include "kernels/work/tiles.h"
 #include "kernels/wavefront/wavefront_renderer.h"
 #include "render_helpers.h"
 #include "test_scenes.h"

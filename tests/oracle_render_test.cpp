@@ -20,7 +20,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "core/scene_file/scene_loader.h"
 #include "kernels/renderer.h"
 #include "oracle/radiosity_solver.h"

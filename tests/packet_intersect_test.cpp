@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "kernels/isa/intersect_dispatch.h"
-#include "kernels/scene_intersect.h"
+#include "kernels/accel/scene_intersect.h"
 #include "kernel_test_helpers.h"
 #include "sanitizer_scale.h"
 #include "test_scenes.h"

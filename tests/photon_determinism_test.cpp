@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/checkpoint/checkpoint.h"
-#include "core/version.h"
+#include "core/system/version.h"
 #include "kernels/caustics/light_path.h"
 #include "mirror_caustic.h"
 #include "render_helpers.h"

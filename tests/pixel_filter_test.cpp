@@ -1,4 +1,4 @@
-// Filter importance sampling (core/film/pixel_filter.h): the unit box is the identity, the
+// Filter importance sampling (core/camera/pixel_filter.h): the unit box is the identity, the
 // tabulated filters' samples follow their density, and light tracing's pixel choice gives each
 // pixel the density of its own samples.
 
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/film/pixel_filter.h"
+#include "core/camera/pixel_filter.h"
 #include "statistics.h"
 
 namespace wt {

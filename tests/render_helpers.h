@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "core/film/film.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "kernels/renderer.h"
 #include "statistics.h"
 

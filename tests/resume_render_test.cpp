@@ -6,8 +6,8 @@
 
 #include "core/checkpoint/checkpoint.h"
 #include "core/scene_file/scene_loader.h"
-#include "core/scene_hash.h"
-#include "core/version.h"
+#include "core/description/scene_hash.h"
+#include "core/system/version.h"
 #include "kernels/renderer.h"
 
 namespace wt {

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/float_minmax.h"
-#include "core/light_table.h"
+#include "core/base/float_minmax.h"
+#include "core/lights/light_table.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/sampling.h"
 #include "statistics.h"

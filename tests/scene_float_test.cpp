@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/camera.h"
-#include "core/scene.h"
+#include "core/camera/camera.h"
+#include "core/scene/scene.h"
 #include "scene_test_helpers.h"
 
 namespace {

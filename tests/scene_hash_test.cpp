@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/scene_hash.h"
+#include "core/description/scene_hash.h"
 #include "test_scenes.h"
 
 namespace wt {

@@ -15,8 +15,8 @@
 
 #include "core/import/imported_mesh.h"
 #include "core/import/mesh_file.h"
-#include "core/printable.h"
-#include "core/regular_file.h"
+#include "core/base/printable.h"
+#include "core/system/regular_file.h"
 #include "core/scene_file/json_parse.h"
 #include "scene_test_helpers.h"
 

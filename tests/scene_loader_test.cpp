@@ -1,5 +1,5 @@
 #include "core/scene_file/scene_loader.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "scene_test_helpers.h"
 
 #include <array>

@@ -29,7 +29,7 @@
 #include "core/materials/bsdf.h"
 #include "bsdf_helpers.h"
 #include "core/materials/fresnel.h"
-#include "core/light_table.h"
+#include "core/lights/light_table.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/sampling.h"
 #include "kernels/isa/intersect_dispatch.h"

@@ -10,8 +10,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/scene.h"
-#include "core/scene_description.h"
+#include "core/scene/scene.h"
+#include "core/description/scene_description.h"
 #include "core/scene_file/scene_loader.h"
 
 namespace wt::test {

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/thread_pool.h"
+#include "core/system/thread_pool.h"
 
 namespace {
 

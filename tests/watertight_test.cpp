@@ -12,9 +12,9 @@
 
 #include <gtest/gtest.h>
 
-#include "core/accuracy.h"
-#include "core/ray_offset.h"
-#include "core/scene.h"
+#include "core/base/accuracy.h"
+#include "core/base/ray_offset.h"
+#include "core/scene/scene.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "test_scenes.h"
 
@@ -149,7 +149,7 @@ TEST(Watertight, NoRayEscapesAClosedMeshOnAnyIsa) {
 // Rays spawned where rays from inside hit the faces x = 0, y = 0 and z = 0 of a box, as the
 // renderer spawns them (surface_at, then offset_ray_origin), must not hit the face they leave.
 // On an axis-aligned plane through 0 the hit point's error bound is 0 along the normal, so the
-// watertight test needs its floor on that bound (with_watertight_floor, core/ray_offset.h):
+// watertight test needs its floor on that bound (with_watertight_floor, core/base/ray_offset.h):
 // without it many such rays met their own wall at a t of a few ulps, and a room with walls on
 // x = 0 and z = 0 rendered too dark.
 // The other side: the same rays started at the hit points themselves, not moved off, do hit

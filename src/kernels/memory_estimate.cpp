@@ -7,9 +7,9 @@
 #include "kernels/accel/bvh_view.h"
 #include "kernels/accel/sah_builder.h"
 #include "kernels/caustics/light_tracing_pass.h"
-#include "kernels/photons/photon_memory.h"
+#include "kernels/caustics/photon_memory.h"
 #include "kernels/isa/intersect_dispatch.h"
-#include "kernels/wavefront/ray_queues.h"
+#include "kernels/queues/ray_queues.h"
 #include "kernels/wavefront/wavefront_renderer.h"
 
 namespace wt {

@@ -7,8 +7,8 @@
 #include <cstddef>
 #include <string>
 
-#include "core/available_memory.h"
-#include "core/scene.h"
+#include "core/system/available_memory.h"
+#include "core/scene/scene.h"
 #include "kernels/renderer.h"
 
 namespace wt {
@@ -24,7 +24,7 @@ struct MemoryEstimate {
     int workers = 1;
     double bvh = 0.0;               // nodes, leaf blocks and the build's temporaries at their peak
     double geometry = 0.0;          // the scene's primitive arrays (already allocated when this is asked)
-    double photons = 0.0;           // one batch of photon maps at its peak (kernels/photons/photon_memory.h), expected
+    double photons = 0.0;           // one batch of photon maps at its peak (kernels/caustics/photon_memory.h), expected
     double instances = 0.0;         // placements, their records and the top-level tree (part allocated)
     std::size_t instance_count = 0;
     double textures = 0.0;          // the textures' mip pyramids and coordinates (allocated, as geometry)

@@ -1,13 +1,13 @@
 #include "kernels/reference_integrator.h"
 
-#include "core/glossy_light_sampler.h"
-#include "core/lights/listed_light_sampler.h"
-#include "core/material_at_hit.h"
-#include "core/path_vertex.h"
-#include "kernels/accel/bvh_single_ray.h"
+#include "core/path/glossy_light_sampler.h"
+#include "core/path/listed_light_sampler.h"
+#include "core/scene/material_at_hit.h"
+#include "core/path/path_vertex.h"
+#include "kernels/isa/bvh_single_ray.h"
 #include "kernels/photons/photon_gather.h"
 #include "kernels/photons/photon_maps.h"
-#include "kernels/scene_intersect.h"
+#include "kernels/accel/scene_intersect.h"
 
 namespace wt {
 
@@ -35,7 +35,7 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
     bool specular_light_elsewhere = false;  // light tracing only: PathContinuation::specular_light_elsewhere
     [[maybe_unused]] bool count_environment = true;  // kListedLights: PathContinuation::count_environment
 
-    std::optional<Material> textured;  // the hit's material with its textures looked up (core/material_at_hit.h)
+    std::optional<Material> textured;  // the hit's material with its textures looked up (core/scene/material_at_hit.h)
     for (uint32_t bounce = 0;; ++bounce) {
         const Hit hit = closest(ray);
         if (!hit.found()) {

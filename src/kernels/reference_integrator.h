@@ -10,11 +10,11 @@
 
 #include "core/film/aov.h"
 #include "core/film/film.h"
-#include "core/first_surface.h"
-#include "core/scene.h"
+#include "core/path/first_surface.h"
+#include "core/scene/scene.h"
 #include "kernels/accel/bvh_view.h"
-#include "kernels/render_stats.h"
-#include "kernels/wavefront/tiles.h"
+#include "kernels/work/render_stats.h"
+#include "kernels/work/tiles.h"
 
 namespace wt {
 

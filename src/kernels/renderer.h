@@ -14,15 +14,16 @@
 
 #include "core/film/aov.h"
 #include "core/film/film.h"
-#include "core/scene.h"
-#include "core/thread_pool.h"
+#include "core/scene/scene.h"
+#include "core/system/thread_pool.h"
 #include "kernels/accel/accel_choice.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/accel/bvh_view.h"
 #include "kernels/accel/scene_bvh.h"
 #include "kernels/isa/intersect_kernels.h"
-#include "kernels/render_stats.h"
-#include "kernels/wavefront/tiles.h"
+#include "kernels/work/render_stats.h"
+#include "kernels/work/sample_range.h"
+#include "kernels/work/tiles.h"
 
 namespace wt {
 
@@ -55,12 +56,6 @@ struct RenderResult {
     std::size_t instance_count = 0;
     std::size_t instanced_mesh_bytes = 0, instance_bytes = 0;
     uint64_t photon_maps_built = 0;  // with photons: the samples whose photons some camera path gathered
-};
-
-// Samples [begin, end) of every pixel.
-struct SampleRange {
-    uint32_t begin = 0, end = 0;
-    uint32_t size() const { return end - begin; }
 };
 
 struct WavefrontWorkspace;

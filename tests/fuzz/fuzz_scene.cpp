@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "core/scene_file/scene_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {

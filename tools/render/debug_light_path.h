@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "kernels/renderer.h"
 
 namespace wt {

@@ -5,7 +5,7 @@
 
 #include <cstring>
 
-#include "core/atomic_file.h"
+#include "core/system/atomic_file.h"
 
 namespace wt {
 

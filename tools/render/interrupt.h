@@ -2,7 +2,7 @@
 // Ctrl-C and SIGTERM during a render. The first asks the render to stop at the next pass
 // boundary, where the images (and a checkpoint, if asked for) are written and the program exits
 // with `exit_interrupted`. The second exits at once: it removes only the temporary file being
-// written at that moment (core/atomic_file.h), so every file already in place stays intact.
+// written at that moment (core/system/atomic_file.h), so every file already in place stays intact.
 
 #include <atomic>
 

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "core/film/film.h"
-#include "kernels/render_stats.h"
+#include "kernels/work/render_stats.h"
 #include "kernels/renderer.h"
 
 namespace wt {

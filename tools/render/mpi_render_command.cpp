@@ -3,7 +3,7 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "core/scene_hash.h"
+#include "core/description/scene_hash.h"
 #include "tools/render/mpi_render.h"
 #include "tools/render/render_checkpoint.h"
 #include "tools/render/render_summary.h"

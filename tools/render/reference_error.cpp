@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/atomic_file.h"
+#include "core/system/atomic_file.h"
 #include "core/image_io/rgb_image_input.h"
 #include "tools/cli/error_report.h"
 

@@ -8,8 +8,8 @@
 
 #include "core/film/aov.h"
 #include "core/film/image_output.h"
-#include "core/scene_hash.h"
-#include "core/version.h"
+#include "core/description/scene_hash.h"
+#include "core/system/version.h"
 
 namespace wt {
 

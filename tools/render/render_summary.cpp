@@ -7,7 +7,7 @@
 
 #include "kernels/adaptive/adaptive_summary.h"
 #include "kernels/isa/intersect_dispatch.h"
-#include "kernels/photons/photon_memory.h"
+#include "kernels/caustics/photon_memory.h"
 
 namespace wt {
 

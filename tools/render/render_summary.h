@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "kernels/progressive_render.h"
 #include "kernels/renderer.h"
 

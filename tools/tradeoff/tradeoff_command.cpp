@@ -7,7 +7,7 @@
 #include <optional>
 #include <sstream>
 
-#include "core/atomic_file.h"
+#include "core/system/atomic_file.h"
 #include "core/image_io/rgb_image_input.h"
 #include "core/scene_file/scene_loader.h"
 #include "tools/tradeoff/tradeoff_fit.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "core/film/film.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace wt {
 

@@ -57,7 +57,7 @@ Checkpoint read_checkpoint_file(const std::string& path);
 // The encoding, for tests and fuzz seeds. Throws std::invalid_argument for a header the format
 // cannot hold (a setting or channel name with white space, an inconsistent sample range).
 std::string checkpoint_bytes(const CheckpointHeader& header, const Film& film);
-// Writes `path` atomically (core/atomic_file.h): on any failure (disk full, unwritable
+// Writes `path` atomically (core/system/atomic_file.h): on any failure (disk full, unwritable
 // directory) FileWriteError is thrown and the file that was there is untouched.
 void write_checkpoint_file(const std::string& path, const CheckpointHeader& header, const Film& film);
 

@@ -1,6 +1,6 @@
 #include "core/checkpoint/checkpoint_match.h"
 
-#include "core/scene_hash.h"
+#include "core/description/scene_hash.h"
 
 namespace wt {
 

@@ -16,8 +16,8 @@
 
 #include "core/checkpoint/checkpoint.h"
 #include "core/checkpoint/checkpoint_format.h"
-#include "core/scene_hash.h"
-#include "core/version.h"
+#include "core/description/scene_hash.h"
+#include "core/system/version.h"
 
 namespace wt {
 

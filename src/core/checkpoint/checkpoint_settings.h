@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt {
 

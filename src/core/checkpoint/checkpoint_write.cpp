@@ -13,10 +13,10 @@
 
 #include <xxhash.h>
 
-#include "core/atomic_file.h"
+#include "core/system/atomic_file.h"
 #include "core/checkpoint/checkpoint.h"
 #include "core/checkpoint/checkpoint_format.h"
-#include "core/scene_hash.h"
+#include "core/description/scene_hash.h"
 
 namespace wt {
 

@@ -9,7 +9,7 @@
 
 #include "core/film/film.h"
 #include "core/film/image_channels.h"
-#include "core/first_surface.h"
+#include "core/path/first_surface.h"
 
 namespace wt {
 

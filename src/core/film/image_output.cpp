@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "core/atomic_file.h"
+#include "core/system/atomic_file.h"
 #include "core/image_io/image_module.h"
 
 namespace wt {

@@ -24,7 +24,7 @@
 #include "core/import/mapped_file.h"
 #include "core/import/mesh_file.h"
 #include "core/import/primitive_triangles.h"
-#include "core/regular_file.h"
+#include "core/system/regular_file.h"
 
 namespace wt {
 namespace {

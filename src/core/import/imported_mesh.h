@@ -13,7 +13,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt {
 

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "core/regular_file.h"
+#include "core/system/regular_file.h"
 
 namespace wt {
 namespace {

@@ -9,7 +9,7 @@
 #include "core/import/material_mapping.h"
 #include "core/materials/microfacet_material.h"
 #include "core/image_io/image_error.h"
-#include "core/regular_file.h"
+#include "core/system/regular_file.h"
 #include "core/textures/texture_file.h"
 
 namespace wt {

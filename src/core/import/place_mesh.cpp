@@ -7,7 +7,7 @@
 #include <glm/matrix.hpp>
 
 #include "core/import/vertex_normals.h"
-#include "core/scene_file/triangle_size.h"
+#include "core/geometry/triangle_size.h"
 
 namespace wt {
 namespace {

@@ -11,7 +11,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/ray_offset.h"
+#include "core/base/ray_offset.h"
 
 namespace wt {
 

@@ -7,7 +7,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "core/instances/scene_instances.h"
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt {
 

@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/geometry_soa.h"
+#include "core/geometry/geometry_soa.h"
 #include "core/instances/affine_transform.h"
-#include "core/shading_normals.h"
+#include "core/geometry/shading_normals.h"
 
 namespace wt {
 

@@ -15,7 +15,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/lights/piecewise_constant.h"
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt {
 

@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/float_minmax.h"
+#include "core/base/float_minmax.h"
 #include "core/sampling/sampling.h"
 
 namespace wt {

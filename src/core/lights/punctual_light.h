@@ -11,7 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/sampling/sampling.h"
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt {
 

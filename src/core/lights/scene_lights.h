@@ -16,12 +16,12 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/geometry_soa.h"
+#include "core/geometry/geometry_soa.h"
 #include "core/lights/environment_light.h"
 #include "core/lights/light_emission.h"
 #include "core/lights/piecewise_constant.h"
 #include "core/lights/punctual_light.h"
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt {
 

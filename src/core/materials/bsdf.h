@@ -6,13 +6,13 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/float_minmax.h"
+#include "core/base/float_minmax.h"
 #include "core/materials/bsdf_sample.h"
 #include "core/materials/conductor_fresnel.h"
 #include "core/materials/fresnel.h"
 #include "core/materials/microfacet_bsdf.h"
 #include "core/sampling/sampling.h"
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt {
 

@@ -11,7 +11,7 @@ struct BsdfSample {
     float pdf = 0.0f;         // rough materials only: the direction's pdf, for the multiple importance weights
     bool specular = false;    // emission seen along it counts (no light sample covered it)
     bool transmitted = false; // refracted through the surface rather than reflected
-    bool glossy = false;      // a rough material's lobe: neither diffuse nor specular (core/path_vertex.h)
+    bool glossy = false;      // a rough material's lobe: neither diffuse nor specular (core/path/path_vertex.h)
     bool valid = false;
 };
 

@@ -8,7 +8,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/float_minmax.h"
+#include "core/base/float_minmax.h"
 
 namespace wt {
 

@@ -7,8 +7,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/accuracy.h"
-#include "core/float_minmax.h"
+#include "core/base/accuracy.h"
+#include "core/base/float_minmax.h"
 
 namespace wt {
 

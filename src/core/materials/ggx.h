@@ -24,7 +24,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/float_minmax.h"
+#include "core/base/float_minmax.h"
 #include "core/sampling/sampling.h"
 
 namespace wt {

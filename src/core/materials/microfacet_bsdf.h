@@ -1,7 +1,7 @@
 #pragma once
 // The rough materials (rough_conductor, rough_glass, principled) in world space, as the path vertices use
 // them: seen from one direction wo, evaluated for many wi (the light samples), or sampled (the
-// next direction). Their lobes are neither diffuse nor specular: see core/path_vertex.h for how
+// next direction). Their lobes are neither diffuse nor specular: see core/path/path_vertex.h for how
 // the integrators treat them.
 //
 // About a shading normal ns the lobe is the flat one about ns, kept only where a direction's
@@ -14,14 +14,14 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/accuracy.h"
+#include "core/base/accuracy.h"
 #include "core/materials/bsdf_sample.h"
 #include "core/materials/conductor_fresnel.h"
 #include "core/materials/principled.h"
 #include "core/materials/rough_conductor.h"
 #include "core/materials/rough_dielectric.h"
 #include "core/sampling/sampling.h"
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt {
 

@@ -15,7 +15,7 @@
 // roughness 0 the specular lobe is the sharpest rough one (kMinGgxAlpha), not a delta: a
 // delta beside a diffuse lobe would make the vertex both specular and not.
 
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt {
 

@@ -33,7 +33,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/float_minmax.h"
+#include "core/base/float_minmax.h"
 #include "core/materials/conductor_fresnel.h"
 #include "core/materials/ggx.h"
 #include "core/materials/microfacet_sample.h"

@@ -24,7 +24,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/accuracy.h"
+#include "core/base/accuracy.h"
 #include "core/materials/fresnel.h"
 #include "core/materials/ggx.h"
 #include "core/materials/microfacet_sample.h"

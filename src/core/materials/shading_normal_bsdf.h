@@ -35,7 +35,7 @@
 
 #include "core/materials/bsdf.h"
 #include "core/materials/fresnel.h"
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt {
 

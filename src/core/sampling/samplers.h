@@ -9,7 +9,7 @@
 //
 // Every value is a pure function of (seed, pixel, sample, bounce, dimension), for all three, so
 // any sample replays alone and images do not depend on threads or batching. The integrators
-// are instantiated per sampler (core/estimator.h): the default costs what it did before there
+// are instantiated per sampler (core/path/estimator.h): the default costs what it did before there
 // was a choice.
 
 #include <cstdint>

@@ -7,7 +7,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/float_minmax.h"
+#include "core/base/float_minmax.h"
 #include "core/sampling/quarter_pi_trig.h"
 
 namespace wt {

@@ -4,7 +4,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "core/printable.h"
+#include "core/base/printable.h"
 #include "core/scene_file/scene_error.h"
 
 namespace wt {

@@ -1,6 +1,6 @@
 #include "core/scene_file/scene_loader.h"
 
-#include "core/regular_file.h"
+#include "core/system/regular_file.h"
 #include "core/scene_file/json_parse.h"
 #include "core/scene_file/scene_schema.h"
 

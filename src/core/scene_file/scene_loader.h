@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 #include "core/scene_file/scene_error.h"
 
 namespace wt {

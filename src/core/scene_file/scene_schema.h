@@ -10,7 +10,7 @@
 
 #include "core/scene_file/json_reader.h"
 #include "core/scene_file/material_names.h"
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 
 namespace wt {
 

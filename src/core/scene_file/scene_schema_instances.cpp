@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <utility>
 
-#include "core/available_memory.h"
+#include "core/system/available_memory.h"
 
 #include "core/instances/build_instances.h"
 #include "core/instances/scene_instances.h"

@@ -9,7 +9,7 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "core/scene_description.h"
+#include "core/description/scene_description.h"
 #include "core/scene_file/json_reader.h"
 #include "core/scene_file/material_names.h"
 

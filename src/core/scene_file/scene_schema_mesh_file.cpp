@@ -6,13 +6,13 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
-#include "core/geometry_soa.h"
+#include "core/geometry/geometry_soa.h"
 #include "core/import/mesh_file.h"
 #include "core/import/place_mesh.h"
 #include "core/import/shared_meshes.h"
 #include "core/instances/build_instances.h"
 #include "core/scene_file/scene_schema.h"
-#include "core/scene_file/triangle_size.h"
+#include "core/geometry/triangle_size.h"
 
 // "type": "mesh_file": a shape whose triangles come from an OBJ, PLY or glTF file.
 

@@ -3,7 +3,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/camera.h"
+#include "core/camera/camera.h"
 #include "core/scene_file/scene_schema.h"
 
 // The camera and render sections.

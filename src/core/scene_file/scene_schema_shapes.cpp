@@ -3,10 +3,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/geometry_soa.h"
+#include "core/geometry/geometry_soa.h"
 #include "core/scene_file/scene_schema.h"
 #include "core/scene_file/scene_schema_instances.h"
-#include "core/scene_file/triangle_size.h"
+#include "core/geometry/triangle_size.h"
 
 // The shapes section: quads, inline meshes and spheres here, mesh files in import/.
 

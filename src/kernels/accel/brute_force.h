@@ -14,7 +14,7 @@
 #include "kernels/primitives/lanes.h"
 #include "kernels/primitives/sphere_lanes.h"
 #include "kernels/primitives/triangle_lanes.h"
-#include "kernels/soa_views.h"
+#include "kernels/primitives/soa_views.h"
 
 namespace wt::packet {
 inline namespace WT_SIMD_ISA {

@@ -16,8 +16,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/aligned_vector.h"
-#include "core/scene.h"
+#include "core/base/aligned_vector.h"
+#include "core/scene/scene.h"
 #include "kernels/accel/bvh_primitives.h"
 #include "kernels/accel/bvh_view.h"
 

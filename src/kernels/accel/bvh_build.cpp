@@ -9,7 +9,7 @@
 #include <string>
 #include <thread>
 
-#include "core/thread_pool.h"
+#include "core/system/thread_pool.h"
 #include "kernels/accel/bvh_boxes.h"
 #include "kernels/accel/bvh_collapse.h"
 #include "kernels/accel/sah_builder.h"

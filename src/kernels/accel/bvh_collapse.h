@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "core/aligned_vector.h"
+#include "core/base/aligned_vector.h"
 #include "kernels/accel/bvh_boxes.h"
 #include "kernels/accel/bvh_view.h"
 #include "kernels/accel/sah_builder.h"

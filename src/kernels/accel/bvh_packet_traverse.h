@@ -9,7 +9,7 @@
 
 #include <cstdint>
 
-#include "core/accuracy.h"
+#include "core/base/accuracy.h"
 #include "kernels/accel/brute_force.h"
 #include "kernels/accel/bvh_traverse.h"
 #include "kernels/accel/bvh_view.h"

@@ -7,9 +7,9 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "core/accuracy.h"
-#include "core/aligned_vector.h"
-#include "core/scene.h"
+#include "core/base/accuracy.h"
+#include "core/base/aligned_vector.h"
+#include "core/scene/scene.h"
 #include "kernels/accel/bvh_view.h"
 
 namespace wt {

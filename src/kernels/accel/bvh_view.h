@@ -11,7 +11,7 @@
 
 #include <cstdint>
 
-#include "kernels/soa_views.h"
+#include "kernels/primitives/soa_views.h"
 
 namespace wt {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/thread_pool.h"
+#include "core/system/thread_pool.h"
 #include "kernels/accel/bvh_boxes.h"
 #include "kernels/accel/bvh_collapse.h"
 #include "kernels/accel/sah_builder.h"

@@ -7,8 +7,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/aligned_vector.h"
-#include "core/scene.h"
+#include "core/base/aligned_vector.h"
+#include "core/scene/scene.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/accel/bvh_view.h"
 

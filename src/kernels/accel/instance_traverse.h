@@ -21,7 +21,7 @@
 #include "kernels/accel/bvh_view.h"
 #include "kernels/accel/query.h"
 #include "kernels/accel/single_ray.h"
-#include "kernels/soa_views.h"
+#include "kernels/primitives/soa_views.h"
 
 namespace wt::packet {
 inline namespace WT_SIMD_ISA {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <type_traits>
 
-#include "kernels/soa_views.h"
+#include "kernels/primitives/soa_views.h"
 
 namespace wt {
 

@@ -4,7 +4,7 @@
 #include <atomic>
 #include <limits>
 
-#include "core/thread_pool.h"
+#include "core/system/thread_pool.h"
 
 namespace wt {
 namespace {

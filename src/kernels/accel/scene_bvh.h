@@ -4,8 +4,8 @@
 
 #include <memory>
 
-#include "core/scene.h"
-#include "core/thread_pool.h"
+#include "core/scene/scene.h"
+#include "core/system/thread_pool.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/accel/bvh_view.h"
 #include "kernels/accel/instance_bvh.h"

@@ -10,11 +10,11 @@
 #include <functional>
 #include <vector>
 
-#include "core/adaptive_settings.h"
+#include "core/description/adaptive_settings.h"
 #include "core/film/film.h"
-#include "core/thread_pool.h"
-#include "kernels/renderer.h"
-#include "kernels/wavefront/tiles.h"
+#include "core/system/thread_pool.h"
+#include "kernels/work/sample_range.h"
+#include "kernels/work/tiles.h"
 
 namespace wt {
 

@@ -14,7 +14,7 @@
 
 #include <cstdint>
 
-#include "core/adaptive_settings.h"
+#include "core/description/adaptive_settings.h"
 
 namespace wt {
 

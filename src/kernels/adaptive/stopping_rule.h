@@ -16,9 +16,9 @@
 
 #include <cstdint>
 
-#include "core/adaptive_settings.h"
+#include "core/description/adaptive_settings.h"
 #include "core/film/film.h"
-#include "core/thread_pool.h"
+#include "core/system/thread_pool.h"
 
 namespace wt {
 

@@ -5,17 +5,17 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/float_minmax.h"
+#include "core/base/float_minmax.h"
 #include "core/lights/light_emission.h"
-#include "core/material_at_hit.h"
+#include "core/scene/material_at_hit.h"
 #include "core/materials/bsdf.h"
 #include "core/materials/shading_normal_bsdf.h"
-#include "core/path_vertex.h"
-#include "core/ray_offset.h"
+#include "core/path/path_vertex.h"
+#include "core/base/ray_offset.h"
 #include "core/sampling/rng.h"
 #include "core/sampling/sampling.h"
-#include "kernels/accel/bvh_single_ray.h"
-#include "kernels/scene_intersect.h"
+#include "kernels/isa/bvh_single_ray.h"
+#include "kernels/accel/scene_intersect.h"
 
 namespace wt {
 

@@ -17,10 +17,10 @@
 #include <glm/vec3.hpp>
 
 #include "core/sampling/rng.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "kernels/accel/bvh_view.h"
 #include "kernels/photons/photon.h"
-#include "kernels/render_stats.h"
+#include "kernels/work/render_stats.h"
 
 namespace wt {
 
@@ -78,7 +78,7 @@ struct LightPathVertexRecord {
 // kernels return the scalar code's bits, so both give the same splats.
 class LightPathTracer {
 public:
-    // `bvh`: the scene's BVH, or null for the flat list (kernels/scene_intersect.h); trace() alone reads it.
+    // `bvh`: the scene's BVH, or null for the flat list (kernels/accel/scene_intersect.h); trace() alone reads it.
     // `records_photons`: at_vertex also returns the photons (Scene::merges_photons).
     LightPathTracer(const Scene& scene, const BvhView* bvh, bool records_photons = false);
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/aligned_vector.h"
+#include "core/base/aligned_vector.h"
 #include "kernels/isa/intersect_dispatch.h"
 
 namespace wt {

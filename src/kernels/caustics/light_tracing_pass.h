@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "core/film/film.h"
-#include "core/thread_pool.h"
+#include "core/system/thread_pool.h"
 #include "kernels/caustics/light_path.h"
 #include "kernels/photons/photon_maps.h"
 #include "kernels/wavefront/stages.h"

@@ -5,10 +5,10 @@
 #include <optional>
 #include <string>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "kernels/isa/intersect_kernels.h"
-#include "kernels/wavefront/ray_queues.h"
-#include "kernels/soa_views.h"
+#include "kernels/queues/ray_queues.h"
+#include "kernels/primitives/soa_views.h"
 
 namespace wt {
 

@@ -2,7 +2,7 @@
 // The table of intersection kernels one ISA's translation unit exports: every query, layout and
 // accuracy combination, instantiated from the generic loops at this ISA's widest vector.
 
-#include "core/accuracy.h"
+#include "core/base/accuracy.h"
 #include "kernels/accel/brute_force.h"
 #include "kernels/accel/bvh_packet_traverse.h"
 #include "kernels/accel/bvh_traverse.h"

@@ -6,7 +6,7 @@
 // integrates to 1 there; Knaus and Zwicker 2011 allow any kernel normalised to 1).
 //
 // Where it is added, and why the path space stays split with no weights (PathContinuation,
-// core/path_vertex.h): a camera path x0 (the eye), x1, ..., with x1 ... x_{j-1} mirrors or glass
+// core/path/path_vertex.h): a camera path x0 (the eye), x1, ..., with x1 ... x_{j-1} mirrors or glass
 // and x_j its first diffuse vertex, adds the estimate at x_j, and from x_j on counts no emission
 // found by a specular bounce. The photons are the diffuse vertices of exactly the light paths
 // whose first bounce is specular, so the estimate at x_j stands for every path x_j -> ... ->
@@ -30,7 +30,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/film/fixed_point.h"
-#include "core/path_vertex.h"
+#include "core/path/path_vertex.h"
 #include "kernels/photons/photon_grid.h"
 
 namespace wt {

@@ -16,7 +16,7 @@
 #include <mutex>
 #include <vector>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "kernels/photons/photon.h"
 #include "kernels/photons/photon_grid.h"
 #include "kernels/photons/photon_radius.h"

@@ -12,7 +12,7 @@
 
 #include <cstdint>
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace wt {
 

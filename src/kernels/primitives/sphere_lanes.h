@@ -3,7 +3,7 @@
 // Ray Tracing Gems ch. 7, as intersect_sphere() and intersect_sphere_cancellation_free() in
 // primitive_intersect.h, with the same bits.
 
-#include "core/accuracy.h"
+#include "core/base/accuracy.h"
 #include "kernels/primitives/lanes.h"
 
 namespace wt::packet {

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <type_traits>
 
-#include "core/accuracy.h"
+#include "core/base/accuracy.h"
 #include "kernels/primitives/lanes.h"
-#include "kernels/soa_views.h"
+#include "kernels/primitives/soa_views.h"
 
 namespace wt::packet {
 inline namespace WT_SIMD_ISA {

@@ -5,11 +5,11 @@
 // default with them) and stage_shade_options_aovs.cpp (the others with them): a render without
 // AOVs runs the loop it ran before they existed, compiled as it was.
 
-#include "core/first_surface.h"
-#include "core/glossy_light_sampler.h"
-#include "core/lights/listed_light_sampler.h"
-#include "core/material_at_hit.h"
-#include "core/path_vertex.h"
+#include "core/path/first_surface.h"
+#include "core/path/glossy_light_sampler.h"
+#include "core/path/listed_light_sampler.h"
+#include "core/scene/material_at_hit.h"
+#include "core/path/path_vertex.h"
 #include "kernels/photons/photon_gather.h"
 #include "kernels/photons/photon_maps.h"
 #include "kernels/wavefront/stages.h"

@@ -1,6 +1,6 @@
 #include <algorithm>
 
-#include "core/path_vertex.h"
+#include "core/path/path_vertex.h"
 #include "kernels/wavefront/stages.h"
 
 namespace wt {

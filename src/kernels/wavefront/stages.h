@@ -3,17 +3,17 @@
 // them in order for one batch of one tile on one worker, so the queues stay in that core's L2.
 
 #include "core/film/film.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "kernels/isa/intersect_kernels.h"
-#include "kernels/wavefront/ray_queues.h"
-#include "kernels/render_stats.h"
-#include "kernels/wavefront/tiles.h"
+#include "kernels/queues/ray_queues.h"
+#include "kernels/work/render_stats.h"
+#include "kernels/work/tiles.h"
 
 namespace wt {
 
 class PhotonMaps;
 
-// The generate and shade stages run the scene's estimator (core/estimator.h), chosen once per
+// The generate and shade stages run the scene's estimator (core/path/estimator.h), chosen once per
 // call, for the whole queue.
 
 // Camera rays for samples [sample_begin, sample_end) of every pixel in the tile, sample-major,
@@ -37,7 +37,7 @@ struct IntersectContext {
 void intersect_closest_stage(const IntersectContext& context, const RayQueue& rays, HitQueue& hits, bool coherent);
 
 // Emission, light samples into `shadows`, and surviving continuations into `next_rays`; with
-// AOVs (a non-empty `paths.first_surface`), each path's first surface (core/first_surface.h);
+// AOVs (a non-empty `paths.first_surface`), each path's first surface (core/path/first_surface.h);
 // with `photons` (the batch's maps, when the scene merges photons), their estimate where a path
 // gathers it (gathers_photons).
 void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,

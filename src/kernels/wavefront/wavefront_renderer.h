@@ -5,11 +5,11 @@
 
 #include "core/film/aov.h"
 #include "core/film/film.h"
-#include "core/scene.h"
-#include "kernels/wavefront/ray_queues.h"
-#include "kernels/render_stats.h"
+#include "core/scene/scene.h"
+#include "kernels/queues/ray_queues.h"
+#include "kernels/work/render_stats.h"
 #include "kernels/wavefront/stages.h"
-#include "kernels/wavefront/tiles.h"
+#include "kernels/work/tiles.h"
 
 namespace wt {
 

@@ -1,0 +1,54 @@
+#include "core/geometry/geometry_soa.h"
+
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+#include <glm/ext/vector_double3.hpp>
+
+namespace wt {
+
+bool is_sliver(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::dvec3 e1 = glm::dvec3(b) - glm::dvec3(a), e2 = glm::dvec3(c) - glm::dvec3(a);
+    constexpr double kResolvableSine = 32.0 * 0x1p-24;
+    return glm::length(glm::cross(e1, e2)) <= kResolvableSine * glm::length(e1) * glm::length(e2);
+}
+
+void TriangleSoA::push_back(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id) {
+    push(a, b, c, material_id);
+}
+
+void TriangleSoA::push_parallelogram(const glm::vec3& a, const glm::vec3& b, const glm::vec3& d, uint32_t material_id) {
+    if (size() != parallelogram_count) throw std::logic_error("TriangleSoA: a parallelogram pushed after a triangle");
+    // A sliver parallelogram collapses like a sliver triangle: same edges, same criterion.
+    push(a, b, d, material_id);
+    ++parallelogram_count;
+}
+
+void TriangleSoA::push(const glm::vec3& a, const glm::vec3& given_b, const glm::vec3& given_c, uint32_t material_id) {
+    // Collapsed, a sliver has zero edges: det = 0 in Moller-Trumbore and every edge function is
+    // 0 in the watertight test, so no kernel can report a hit on it.
+    const bool sliver = is_sliver(a, given_b, given_c);
+    const glm::vec3 b = sliver ? a : given_b;
+    const glm::vec3 c = sliver ? a : given_c;
+    const glm::vec3 e1 = b - a;
+    const glm::vec3 e2 = c - a;
+    const glm::vec3 cross = glm::cross(e1, e2);
+    const float length = glm::length(cross);
+    const glm::vec3 n = length > 0.0f ? cross / length : glm::vec3(0.0f);
+    v0x.push_back(a.x), v0y.push_back(a.y), v0z.push_back(a.z);
+    v1x.push_back(b.x), v1y.push_back(b.y), v1z.push_back(b.z);
+    v2x.push_back(c.x), v2y.push_back(c.y), v2z.push_back(c.z);
+    e1x.push_back(e1.x), e1y.push_back(e1.y), e1z.push_back(e1.z);
+    e2x.push_back(e2.x), e2y.push_back(e2.y), e2z.push_back(e2.z);
+    scaled_nx.push_back(cross.x), scaled_ny.push_back(cross.y), scaled_nz.push_back(cross.z);
+    nx.push_back(n.x), ny.push_back(n.y), nz.push_back(n.z);
+    material.push_back(material_id);
+}
+
+void SphereSoA::push_back(const glm::vec3& c, float r, uint32_t material_id) {
+    cx.push_back(c.x), cy.push_back(c.y), cz.push_back(c.z);
+    radius.push_back(r);
+    material.push_back(material_id);
+}
+
+}  // namespace wt

@@ -1,0 +1,94 @@
+#pragma once
+// The emissive triangles as a sampling table. A light point is chosen with probability
+// proportional to area, so the pdf with respect to area is 1 / total_area everywhere on every
+// light, whatever their emission.
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/geometry/geometry_soa.h"
+#include "core/base/ray_offset.h"
+#include "core/sampling/sampling.h"
+#include "core/description/scene_description.h"
+
+namespace wt {
+
+struct LightSample {
+    glm::vec3 position;
+    glm::vec3 error;     // bound on the rounding error of position
+    glm::vec3 normal;    // the emitting (front) side
+    glm::vec3 radiance;  // emitted towards the front side
+    float pdf_area;
+};
+
+class LightTable {
+public:
+    LightTable() = default;
+    LightTable(const TriangleSoA& triangles, const std::vector<Material>& materials);
+
+    bool empty() const { return emitters_.empty(); }
+    std::size_t size() const { return emitters_.size(); }
+    float total_area() const { return total_area_; }
+    float pdf_area() const { return pdf_area_; }  // of every light point sample() returns
+    // 1 / total_area: the pdf of a light point when the area lights are the only lights (where
+    // light paths start without a "lights" list), whatever the selection below.
+    float pdf_area_alone() const { return pdf_area_alone_; }
+    // With other lights (core/lights/scene_lights.h) the area lights are picked with probability
+    // p, and the pdfs this table returns include it: pdf_area() becomes p / total_area.
+    void set_selection_probability(float p) { pdf_area_ = p / total_area_; }
+
+    // u_choice picks the triangle, (u0, u1) the point on it. (The triangles argument is the
+    // scene's; the table keeps its own copy of what sampling reads, in one cache line per light.)
+    // Inline: it runs once per shadow ray, and a call returning this struct cost a third of it.
+    LightSample sample(const TriangleSoA& triangles, float u_choice, float u0, float u1) const;
+
+private:
+    // The first emitter whose cdf exceeds u_choice (the last if none does, or u_choice is NaN).
+    // The cdf never decreases, so that is the number of cdf entries before the last that u_choice
+    // is not below. With a handful of emitters they are all counted,
+    // without a branch: as an early-exit scan, which triangle a uniform u_choice picks was a coin
+    // toss for the branch predictor on every shadow ray. Many emitters are bisected.
+    std::size_t pick(float u_choice) const {
+        const std::size_t candidates = candidates_;
+        if (candidates < kCountedEmitters) {
+            std::size_t k = 0;
+            for (std::size_t i = 0; i < candidates; ++i) k += !(u_choice < emitters_[i].cdf);
+            return k;
+        }
+        const auto first = std::partition_point(emitters_.begin(), emitters_.begin() + std::ptrdiff_t(candidates),
+                                                [u_choice](const Emitter& e) { return !(u_choice < e.cdf); });
+        return std::size_t(first - emitters_.begin());
+    }
+    static constexpr std::size_t kCountedEmitters = 8;
+
+    // Everything one light sample reads, together: sampling touches one record, not six arrays.
+    struct Emitter {
+        glm::vec3 v0, e1, e2, normal, radiance;
+        float cdf;  // cumulative area fraction up to and including this triangle; the last is 1
+        glm::vec3 abs_v0, abs_e1, abs_e2;  // for the sample's error bound, taken once here
+        bool parallelogram;  // (u, v) uniform in the unit square, not folded into the triangle
+    };
+    std::vector<Emitter> emitters_;
+    std::size_t candidates_ = 0;  // emitters_.size() - 1: the last is taken when no other is
+    float total_area_ = 0.0f;
+    float pdf_area_ = 0.0f;  // 1 / total_area_, divided once here rather than per sample
+    float pdf_area_alone_ = 0.0f;
+};
+
+inline LightSample LightTable::sample(const TriangleSoA&, float u_choice, float u0, float u1) const {
+    const Emitter& e = emitters_[pick(u_choice)];
+    const glm::vec2 b = e.parallelogram ? glm::vec2(u0, u1) : sample_uniform_triangle(u0, u1);
+    LightSample s;
+    s.position = e.v0 + b.x * e.e1 + b.y * e.e2;
+    s.error = triangle_point_error_from_magnitudes(e.abs_v0, e.abs_e1, e.abs_e2, b.x, b.y);
+    s.normal = e.normal;
+    s.radiance = e.radiance;
+    s.pdf_area = pdf_area_;
+    return s;
+}
+
+}  // namespace wt

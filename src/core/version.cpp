@@ -1,9 +1,0 @@
-#include "core/version.h"
-
-namespace wt {
-
-// A compile definition on this file alone (src/core/CMakeLists.txt), so a new version
-// recompiles one file.
-const char* program_version() { return WAVETRACE_VERSION; }
-
-}  // namespace wt
