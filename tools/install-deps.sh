@@ -15,6 +15,7 @@ packages=(
   libtinygltf-dev               # mesh files: glTF 2.0 (.gltf, .glb)
   libgtest-dev                  # tests
   libbenchmark-dev              # benchmarks
+  python3                       # tools/check_layers.py: the include-layer check (ctest layers.*)
   valgrind                      # callgrind, for the instruction-count performance gate
   libxxhash-dev                 # the checkpoint checksum (XXH3-64)
   python3-matplotlib            # tools/plot_tradeoff.py: the error-against-time plot of `wavetrace tradeoff`

@@ -1,0 +1,4 @@
+#pragma once
+#include "core/base/ray.h"
+#include <vector>
+struct Scene { std::vector<Ray> rays; };
