@@ -81,6 +81,31 @@ TEST(MicrofacetRender, RoughSpheresReflectNoMoreThanTheFurnaceGivesAndNeeAgreesW
     }
 }
 
+// With Kulla & Conty's compensation a white rough metal shows the walls' 1 at every pixel (a
+// convex sphere sees only the walls), with nee and mis alike, where single scattering shows the
+// known loss; a coloured metal gains light but no channel passes 1.
+TEST(MicrofacetRender, MultipleScatteringMakesAWhiteRoughMetalReflectEverything) {
+    Material white = rough(MaterialType::rough_conductor, 1.0f);
+    Material copper = rough(MaterialType::rough_conductor, 0.6f);
+    copper.f0 = glm::vec3(0.95f, 0.64f, 0.54f);
+    for (LightSampling sampling : {LightSampling::nee, LightSampling::mis}) {
+        SceneDescription on = sphere_in_furnace(white, sampling);
+        on.settings.accuracy.multiple_scattering = MultipleScattering::kulla_conty;
+        const ImageStats compensated = image_stats(test::render_film(on, Integrator::wavefront).film);
+        EXPECT_EQ(compensated.brighter_than_walls, 0);
+        // The albedo table's error (multiple_scattering_test) plus a little for the noise.
+        EXPECT_NEAR(compensated.mean, 1.0, 0.006);
+        const ImageStats single = image_stats(test::render_film(sphere_in_furnace(white, sampling), Integrator::wavefront).film);
+        EXPECT_LT(single.mean, 0.6);
+        SceneDescription copper_on = sphere_in_furnace(copper, sampling);
+        copper_on.settings.accuracy.multiple_scattering = MultipleScattering::kulla_conty;
+        const ImageStats copper_compensated = image_stats(test::render_film(copper_on, Integrator::wavefront).film);
+        const ImageStats copper_single = image_stats(test::render_film(sphere_in_furnace(copper, sampling), Integrator::wavefront).film);
+        EXPECT_EQ(copper_compensated.brighter_than_walls, 0);
+        EXPECT_GT(copper_compensated.mean, copper_single.mean + 0.02);
+    }
+}
+
 // A white metal is bright, a black one (F0 = 0) is black: the lobe is what lights the image.
 TEST(MicrofacetRender, BlackMetalIsBlack) {
     Material black = rough(MaterialType::rough_conductor, 0.4f);
@@ -119,6 +144,24 @@ TEST(MicrofacetRender, SameBitsFromEveryScheduleWithLightTracingAndPhotons) {
         }
 }
 
+// Only the GGX reflection lobes change: a scene without them renders the same bits with
+// compensation as without, a room with them does not, and renders it with the same bits from
+// every schedule and both integrators, light tracing and photons included.
+TEST(MicrofacetRender, MultipleScatteringChangesOnlyRoughLobesAndKeepsBitIdentity) {
+    SceneDescription plain = test::hexroom(24, 16, 4);
+    SceneDescription plain_on = plain;
+    plain_on.settings.accuracy.multiple_scattering = MultipleScattering::kulla_conty;
+    EXPECT_TRUE(test::render_film(plain, Integrator::wavefront).film == test::render_film(plain_on, Integrator::wavefront).film);
+    for (CausticPaths caustics : {CausticPaths::path, CausticPaths::photons}) {
+        const SceneDescription rough_room = room_with_rough_spheres(caustics, LightSampling::mis);
+        SceneDescription on = rough_room;
+        on.settings.accuracy.multiple_scattering = MultipleScattering::kulla_conty;
+        const Film film = test::render_film(on, Integrator::wavefront).film;
+        EXPECT_FALSE(film == test::render_film(rough_room, Integrator::wavefront).film);
+        test::expect_same_film_for_any_schedule(on, film);
+    }
+}
+
 // Roughness 0 from the scene file is today's mirror and glass: the same image bits.
 TEST(MicrofacetRender, RoughnessZeroIsTheMirrorAndTheGlassBitForBit) {
     const auto render = [](const std::string& material) {
@@ -150,6 +193,31 @@ TEST(MicrofacetSceneFile, ReadsTheKeys) {
     EXPECT_FLOAT_EQ(g.materials[2].ior, 1.33f);
 }
 
+
+TEST(MicrofacetSceneFile, ReadsMultipleScatteringAndRefusesAnUnknownName) {
+    std::string text = scene_with_sphere_material(R"({"type": "conductor", "roughness": 0.5})");
+    EXPECT_EQ(parse_scene_json(text, "test.json").settings.accuracy.multiple_scattering, MultipleScattering::none);
+    const std::string render_key = "\"render\": {";
+    const std::size_t at = text.find(render_key);
+    ASSERT_NE(at, std::string::npos);
+    std::string on = text, bad = text;
+    on.insert(at + render_key.size(), R"("multiple_scattering": "kulla_conty", )");
+    bad.insert(at + render_key.size(), R"("multiple_scattering": "yes", )");
+    const SceneDescription d = parse_scene_json(on, "test.json");
+    EXPECT_EQ(d.settings.accuracy.multiple_scattering, MultipleScattering::kulla_conty);
+    // The loaders leave the materials alone; the scene builder marks the GGX reflection lobes.
+    EXPECT_FALSE(d.materials[2].multiple_scattering);
+    const Scene scene = build_scene(d);
+    EXPECT_TRUE(scene.materials[2].multiple_scattering);
+    for (std::size_t i = 0; i < 2; ++i) EXPECT_FALSE(scene.materials[i].multiple_scattering) << i;
+    try {
+        parse_scene_json(bad, "test.json");
+        ADD_FAILURE() << "accepted multiple_scattering \"yes\"";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("render.multiple_scattering: must be one of \"none\", \"kulla_conty\""), std::string::npos)
+            << e.what();
+    }
+}
 
 TEST(MicrofacetSceneFile, RefusesBadValuesNamingTheField) {
     expect_refused(R"({"type": "conductor", "roughness": 1.5})", "materials.ball.roughness: must be in [0, 1], got 1.5");

@@ -87,7 +87,7 @@ TEST(PrincipledSampling, LobeMixtureMatchesItsPdf) {
                 [&](const glm::vec3& wi) { return double(bsdf.pdf(wi)); }, 200000, seed++);
             EXPECT_GT(p, kSignificance) << m.metallic << " " << m.roughness << " theta " << theta;
             // The pdf is the mixture's: no lobe is a delta, so every sample's pdf is finite.
-            const PrincipledBrdf brdf(m.base_color, m.metallic, ggx_alpha(m.roughness), m.ior, direction_at(theta, 0.7));
+            const PrincipledBrdf brdf(m.base_color, m.metallic, m.roughness, m.ior, direction_at(theta, 0.7));
             EXPECT_GT(brdf.specular_probability(), 0.0f);
             EXPECT_LT(brdf.specular_probability(), 1.0f);
         }
@@ -142,7 +142,7 @@ TEST(Principled, PdfIntegratesToOneLessTheSpecularLobesMaskedShare) {
             const glm::vec3 wo = direction_at(theta, 0.3);
             const MicrofacetBsdfAtView bsdf = view(m, wo);
             const double integral = sphere_integral([&](const glm::vec3& wi) { return double(bsdf.pdf(wi)); }, 800);
-            const float p = PrincipledBrdf(m.base_color, m.metallic, ggx_alpha(m.roughness), m.ior, wo).specular_probability();
+            const float p = PrincipledBrdf(m.base_color, m.metallic, m.roughness, m.ior, wo).specular_probability();
             EXPECT_LT(integral, 1.0 + 3e-3) << theta;
             EXPECT_GT(integral, 1.0 - p - 3e-3) << theta;
             if (theta == 0.0f && m.roughness == 0.5f) {

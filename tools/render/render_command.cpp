@@ -57,6 +57,10 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::IsMember({"quadratic", "cancellation_free"}));
     cmd->add_option("--fresnel", o.fresnel, "schlick (approximation) or exact (dielectric Fresnel equations)")
         ->check(CLI::IsMember({"schlick", "exact"}));
+    cmd->add_option("--multiple-scattering", o.multiple_scattering,
+                    "none (rough metals lose the light single scattering cannot return) or kulla_conty "
+                    "(a lobe gives it back: rough conductors and the principled material's specular lobe)")
+        ->check(CLI::IsMember({"none", "kulla_conty"}));
     cmd->add_option("--sampler", o.sampler, "stratified (jittered pixel), independent, or sobol (Owen-scrambled Sobol')")
         ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
     cmd->add_option("--light-sampling", o.light_sampling, "nee (light samples only) or mis (light and BSDF samples, power heuristic)")
@@ -148,6 +152,7 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.triangle_test) s.accuracy.triangles = *parse_triangle_test(*o.triangle_test);
     if (o.sphere_test) s.accuracy.spheres = *parse_sphere_test(*o.sphere_test);
     if (o.fresnel) s.accuracy.fresnel = *parse_fresnel_model(*o.fresnel);
+    if (o.multiple_scattering) s.accuracy.multiple_scattering = *parse_multiple_scattering(*o.multiple_scattering);
     if (o.sampler) s.estimator.sampler = *parse_sampler(*o.sampler);
     if (o.light_sampling) s.estimator.light_sampling = *parse_light_sampling(*o.light_sampling);
     if (o.clamp_indirect) s.estimator.clamp_indirect = *o.clamp_indirect;

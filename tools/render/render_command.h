@@ -19,7 +19,7 @@ struct RenderCommandOptions {
     // Overrides of the scene's render settings; unset means "as the scene says".
     std::optional<int> spp, shadow_rays, width, height;
     std::optional<uint64_t> seed;
-    std::optional<std::string> triangle_test, sphere_test, fresnel;
+    std::optional<std::string> triangle_test, sphere_test, fresnel, multiple_scattering;
     std::optional<std::string> sampler, light_sampling, caustics;
     std::optional<float> clamp_indirect;
     std::optional<double> light_paths_per_pixel;

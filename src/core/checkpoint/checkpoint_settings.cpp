@@ -38,6 +38,9 @@ std::vector<NamedSetting> image_settings(const RenderSettings& s) {
     // The filter only when it is not the unit box, which every render had before there was a choice.
     if (!s.filter.is_unit_box())
         settings.push_back({"filter", std::string(name_of(s.filter.kind)) + " " + exact(s.filter.width)});
+    // Multiple scattering only when on, which no render before it was.
+    if (s.accuracy.multiple_scattering != MultipleScattering::none)
+        settings.push_back({"multiple_scattering", name_of(s.accuracy.multiple_scattering)});
     // Likewise the photons' radius, which only the photons read.
     if (s.estimator.caustics == CausticPaths::photons)
         settings.push_back({"photon_radius", exact(s.estimator.photon_radius)});

@@ -62,6 +62,13 @@ struct Material {
     // normal_scale; it replaces the shading normal. Triangles with texture coordinates only.
     int32_t normal_texture = -1;
     float normal_scale = 1.0f;
+    // Set by build_scene from settings.accuracy.multiple_scattering, never by the loaders: the
+    // GGX reflection lobe of a rough_conductor or principled material gets Kulla & Conty's
+    // multiple-scattering lobe (core/materials/multiple_scattering.h). A conductor given by its
+    // complex index needs its Fresnel term's cosine-weighted average for that, computed once here;
+    // Schlick's has a closed form, taken at each hit (a texture may change f0).
+    bool multiple_scattering = false;
+    glm::vec3 conductor_fresnel_average{0.0f};
 
     bool has_textures() const { return color_texture >= 0 || metallic_roughness_texture >= 0 || normal_texture >= 0; }
     bool is_emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }

@@ -11,12 +11,16 @@
 // the same (slightly darker near silhouettes) integral. A view behind ns (possible at
 // silhouettes) uses the geometric normal, as the specular materials do (shading_normal_bsdf.h).
 
+#include <optional>
+
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/base/accuracy.h"
 #include "core/materials/bsdf_sample.h"
+#include "core/materials/compensated_conductor.h"
 #include "core/materials/conductor_fresnel.h"
+#include "core/materials/multiple_scattering.h"
 #include "core/materials/principled.h"
 #include "core/materials/rough_conductor.h"
 #include "core/materials/rough_dielectric.h"
@@ -26,6 +30,12 @@
 namespace wt {
 
 inline ConductorFresnel conductor_fresnel(const Material& m) { return ConductorFresnel{m.f0, m.eta, m.k}; }
+
+// The conductor's F_avg for its multiple-scattering lobe: Schlick's in closed form (a texture may
+// have changed f0 at this hit), the complex index's as the scene builder integrated it.
+inline glm::vec3 conductor_fresnel_average(const Material& m) {
+    return m.eta.x > 0.0f ? m.conductor_fresnel_average : schlick_fresnel_average(m.f0);
+}
 
 // The normal a rough vertex scatters about: ns turned to the side of n_geom (unit, facing the
 // incoming direction d) if d arrives in front of it, else n_geom.
@@ -48,7 +58,10 @@ public:
           principled_(m.type == MaterialType::principled),
           conductor_(ggx_alpha(m.roughness), conductor_fresnel(m)),
           glass_(ggx_alpha(m.roughness), m.ior, front, fresnel),
-          mixed_(m.base_color, m.metallic, ggx_alpha(m.roughness), m.ior, wo_) {}
+          mixed_(m.base_color, m.metallic, m.roughness, m.ior, wo_, principled_ && m.multiple_scattering) {
+        if (m.multiple_scattering && m.type == MaterialType::rough_conductor)
+            compensated_.emplace(m.roughness, conductor_fresnel(m), conductor_fresnel_average(m), wo_);
+    }
 
     bool transmits() const { return dielectric_; }
 
@@ -58,6 +71,7 @@ public:
         if (!sides_agree(wi, local)) return glm::vec3(0.0f);
         const float cos_i = std::abs(local.z);
         if (principled_) return mixed_.f(wo_, local) * cos_i;
+        if (compensated_) return compensated_->f(wo_, local) * cos_i;
         return dielectric_ ? glm::vec3(glass_.f(wo_, local) * cos_i) : conductor_.f(wo_, local) * cos_i;
     }
 
@@ -66,15 +80,17 @@ public:
         const glm::vec3 local = to_local(frame_, wi);
         if (!sides_agree(wi, local)) return 0.0f;
         if (principled_) return mixed_.pdf(wo_, local);
+        if (compensated_) return compensated_->pdf(wo_, local);
         return dielectric_ ? glass_.pdf(wo_, local) : conductor_.pdf(wo_, local);
     }
 
     BsdfSample sample(float u0, float u1, float u_choice) const {
         BsdfSample s;
         if (!(wo_.z > 0.0f)) return s;  // wo at the horizon after rounding
-        const MicrofacetSample m = principled_  ? mixed_.sample(wo_, u0, u1, u_choice)
-                                   : dielectric_ ? glass_.sample(wo_, u0, u1, u_choice)
-                                                 : conductor_.sample(wo_, u0, u1);
+        const MicrofacetSample m = principled_    ? mixed_.sample(wo_, u0, u1, u_choice)
+                                   : compensated_ ? compensated_->sample(wo_, u0, u1, u_choice)
+                                   : dielectric_  ? glass_.sample(wo_, u0, u1, u_choice)
+                                                  : conductor_.sample(wo_, u0, u1);
         if (!m.valid) return s;
         s.direction = glm::normalize(frame_.to_world(m.wi));
         if (!sides_agree(s.direction, to_local(frame_, s.direction))) return s;
@@ -99,6 +115,8 @@ private:
     RoughConductor conductor_;
     RoughDielectric glass_;
     PrincipledBrdf mixed_;  // after wo_, which it reads
+    // A rough conductor with Material::multiple_scattering; it is then the BSDF, not conductor_.
+    std::optional<CompensatedConductor> compensated_;
 };
 
 // sample_bsdf for a rough material: n_geom is the geometric normal (outward, as glass reads

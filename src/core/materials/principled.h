@@ -20,13 +20,14 @@
 // 1 for most wi, while the specular lobe's Fresnel term climbs towards 1, and the directional
 // albedo of a white plastic rises past 1 (about 1.3 at roughness 0.3 seen at 87 degrees;
 // tests/principled_bsdf_test.cpp measures it); for smooth surfaces the excess starts past
-// about 45 degrees. Seen within 40 degrees of the normal it stays at or below 1. Renderers that conserve energy there (Cycles' Principled BSDF) scale the
-// diffuse by the specular lobe's albedo instead (Kulla & Conty 2017); not done here.
+// about 45 degrees. Seen within 40 degrees of the normal it stays at or below 1. Renderers that
+// conserve energy there (Cycles' Principled BSDF) scale the diffuse by the specular lobe's albedo
+// instead (Kulla & Conty 2017); not done here. With multiple_scattering the specular lobe gets
+// back what its single scattering loses (multiple_scattering.h), as a metal's does; the
+// coupling above is the specification's either way.
 //
 // Sampling picks one lobe, the specular with probability P from the lobes' Fresnel weights at
-// the macro normal, and returns the one-sample mixture pdf P pdf_specular + (1 - P) cos_i / pi
-// (pbrt-v4's and Mitsuba's way for layered lobes: the weight f cos / pdf uses the mixture pdf
-// whichever lobe drew the direction, so the estimator is unbiased for any P in (0, 1)).
+// the macro normal, else the cosine lobe, with the one-sample mixture pdf (ggx_cosine_mixture.h).
 
 #include <cmath>
 
@@ -36,7 +37,9 @@
 #include "core/base/float_minmax.h"
 #include "core/materials/conductor_fresnel.h"
 #include "core/materials/ggx.h"
+#include "core/materials/ggx_cosine_mixture.h"
 #include "core/materials/microfacet_sample.h"
+#include "core/materials/multiple_scattering.h"
 #include "core/materials/rough_conductor.h"
 #include "core/sampling/sampling.h"
 
@@ -51,12 +54,18 @@ inline float dielectric_f0(float ior) {
 class PrincipledBrdf {
 public:
     // base_color and metallic in [0, 1] (a metallic 1 usually loads as the conductor instead:
-    // microfacet_material.h); wo the view, local, for the lobe choice.
-    PrincipledBrdf(const glm::vec3& base_color, float metallic, float alpha, float ior, const glm::vec3& wo)
-        : specular_(alpha, ConductorFresnel{glm::vec3((1.0f - metallic) * dielectric_f0(ior)) + metallic * base_color}),
+    // microfacet_material.h); roughness perceptual; wo the view, local, for the lobe choice.
+    // multiple_scattering: the specular lobe gets Kulla & Conty's compensation
+    // (multiple_scattering.h), with the F_avg of its Schlick term, and the cosine lobe, which
+    // samples the diffuse, samples that too.
+    PrincipledBrdf(const glm::vec3& base_color, float metallic, float roughness, float ior, const glm::vec3& wo,
+                   bool multiple_scattering = false)
+        : specular_(ggx_alpha(roughness), ConductorFresnel{specular_f0(base_color, metallic, ior)}),
+          multiple_(multiple_scattering ? MultipleScatteringLobe(roughness, schlick_fresnel_average(specular_f0(base_color, metallic, ior)), wo.z)
+                                        : MultipleScatteringLobe()),
           diffuse_((1.0f - metallic) * kInvPi * base_color),
           f0_dielectric_(dielectric_f0(ior)),
-          specular_probability_(specular_probability(base_color, metallic, f0_dielectric_, wo)) {}
+          specular_probability_(specular_probability(base_color, metallic, f0_dielectric_, wo, multiple_.albedo())) {}
 
     glm::vec3 f(const glm::vec3& wo, const glm::vec3& wi) const {
         if (!(wo.z > 0.0f && wi.z > 0.0f)) return glm::vec3(0.0f);
@@ -65,49 +74,45 @@ public:
         if (!(length2 > 0.0f)) return glm::vec3(0.0f);
         const float wo_h = fmin_float(1.0f, glm::dot(wo, sum) / std::sqrt(length2));
         const float transmitted = 1.0f - schlick_conductor(glm::vec3(f0_dielectric_), wo_h).x;
-        return specular_.f(wo, wi) + diffuse_ * transmitted;
+        return specular_.f(wo, wi) + multiple_.f(wi) + diffuse_ * transmitted;
     }
 
-    float pdf(const glm::vec3& wo, const glm::vec3& wi) const {
-        if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
-        return specular_probability_ * specular_.pdf(wo, wi) + (1.0f - specular_probability_) * wi.z * kInvPi;
-    }
+    float pdf(const glm::vec3& wo, const glm::vec3& wi) const { return lobes().pdf(wo, wi); }
 
     // u_choice picks the lobe, (u0, u1) the direction within it.
     MicrofacetSample sample(const glm::vec3& wo, float u0, float u1, float u_choice) const {
-        MicrofacetSample s;
-        if (u_choice < specular_probability_) {
-            const MicrofacetSample specular = specular_.sample(wo, u0, u1);
-            if (!specular.valid) return s;
-            s.wi = specular.wi;
-        } else {
-            s.wi = sample_cosine_hemisphere(u0, u1);
-        }
-        if (!(s.wi.z > 0.0f)) return s;
-        s.pdf = pdf(wo, s.wi);
-        if (!(s.pdf > 0.0f && s.pdf < INFINITY)) return s;
-        s.weight = f(wo, s.wi) * (s.wi.z / s.pdf);
-        s.valid = true;
-        return s;
+        return lobes().sample(wo, u0, u1, u_choice, [this](const glm::vec3& o, const glm::vec3& i) { return f(o, i); });
     }
 
     float specular_probability() const { return specular_probability_; }
 
 private:
-    // The specular lobe's share of what the two reflect seen from wo, by their Fresnel weights
+    GgxCosineMixture lobes() const { return GgxCosineMixture(specular_, specular_probability_); }
+
+    // The specular lobe's F0: Schlick's term is linear in F0, so mixing the dielectric's and the
+    // metal's terms by metallic is one term of the mixed F0.
+    static glm::vec3 specular_f0(const glm::vec3& base_color, float metallic, float ior) {
+        return glm::vec3((1.0f - metallic) * dielectric_f0(ior)) + metallic * base_color;
+    }
+
+    // The specular lobe's share of what the lobes reflect seen from wo, by their Fresnel weights
     // at the macro normal (the lobes' albedos without the microfacet terms), averaged over the
-    // channels. Positive whenever metallic < 1 (Schlick's grazing term is, and F0_d is for any
-    // ior but 1); 1 with no diffuse to sample (a black base).
-    static float specular_probability(const glm::vec3& base_color, float metallic, float f0_dielectric, const glm::vec3& wo) {
+    // channels; the multiple-scattering lobe's albedo counts with the diffuse, since the cosine
+    // lobe samples both. Positive whenever metallic < 1 (Schlick's grazing term is, and F0_d is
+    // for any ior but 1); 1 with nothing else to sample (a black base).
+    static float specular_probability(const glm::vec3& base_color, float metallic, float f0_dielectric, const glm::vec3& wo,
+                                      const glm::vec3& multiple_albedo) {
         const float grazing = schlick_conductor(glm::vec3(0.0f), fmin_float(1.0f, fmax_float(0.0f, wo.z))).x;
         const float base = (base_color.x + base_color.y + base_color.z) * (1.0f / 3.0f);
         const float f_d = f0_dielectric + (1.0f - f0_dielectric) * grazing;
         const float specular = (1.0f - metallic) * f_d + metallic * (base + (1.0f - base) * grazing);
-        const float diffuse = (1.0f - metallic) * (1.0f - f_d) * base;
+        const float diffuse = (1.0f - metallic) * (1.0f - f_d) * base +
+                              (multiple_albedo.x + multiple_albedo.y + multiple_albedo.z) * (1.0f / 3.0f);
         return specular + diffuse > 0.0f ? specular / (specular + diffuse) : 1.0f;
     }
 
     RoughConductor specular_;
+    MultipleScatteringLobe multiple_;  // none without multiple_scattering
     glm::vec3 diffuse_;    // (1 - metallic) baseColor / pi
     float f0_dielectric_;  // declared before specular_probability_, which reads it
     float specular_probability_;

@@ -1,6 +1,8 @@
 #include "core/scene/scene.h"
 
 #include "core/instances/build_instances.h"
+#include "core/materials/microfacet_bsdf.h"
+#include "core/materials/multiple_scattering.h"
 
 #include <algorithm>
 #include <cmath>
@@ -93,6 +95,21 @@ void set_camera_cone(Scene& scene, const SceneDescription& d) {
     scene.cone_spread = 2.0f * std::tan(0.5f * d.camera.fov_degrees * 3.14159265358979f / 180.0f) / height;
 }
 
+// Kulla & Conty's lobe (core/materials/multiple_scattering.h) for every GGX reflection lobe:
+// the rough conductors' and the principled materials'. Rough glass keeps single scattering (its
+// compensation needs tables per index of refraction and side; README, "Rough materials"). The
+// albedo table is computed here, before rendering, rather than by the first vertex that needs it.
+void add_multiple_scattering(std::vector<Material>& materials) {
+    bool any = false;
+    for (Material& m : materials) {
+        if (m.type != MaterialType::rough_conductor && m.type != MaterialType::principled) continue;
+        m.multiple_scattering = true;
+        if (m.eta.x > 0.0f) m.conductor_fresnel_average = exact_fresnel_average(conductor_fresnel(m));
+        any = true;
+    }
+    if (any) ggx_albedo_table();
+}
+
 }  // namespace
 
 Scene build_scene(const SceneDescription& description) {
@@ -101,6 +118,8 @@ Scene build_scene(const SceneDescription& description) {
     scene.camera = Camera(description.camera, description.settings.width, description.settings.height);
     scene.pixel_filter = PixelFilter(description.settings.filter);
     scene.materials = description.materials;
+    if (description.settings.accuracy.multiple_scattering == MultipleScattering::kulla_conty)
+        add_multiple_scattering(scene.materials);
     // Parallelograms first (TriangleSoA keeps them as a prefix), and only for the test that
     // knows them. A mesh with vertex normals stays triangles: there is no interpolating them
     // over a parallelogram.

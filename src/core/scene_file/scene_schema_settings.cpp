@@ -116,7 +116,7 @@ CameraDescription read_camera(const Reader& in, const Json& j, const std::string
 RenderSettings read_render(const Reader& in, const Json& j, const std::string& path) {
     in.expect_object(j, path);
     in.check_keys(j, path, {"width", "height", "spp", "shadow_rays", "seed", "max_bounces", "rr_start_bounce",
-                            "triangle_test", "sphere_test", "fresnel", "sampler", "light_sampling", "clamp_indirect",
+                            "triangle_test", "sphere_test", "fresnel", "multiple_scattering", "sampler", "light_sampling", "clamp_indirect",
                             "caustics", "light_paths_per_pixel", "photon_radius", "adaptive_threshold",
                             "adaptive_min_spp", "filter", "filter_width"});
     RenderSettings s;
@@ -142,6 +142,7 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     read_choice("triangle_test", s.accuracy.triangles, parse_triangle_test, "\"moller_trumbore\", \"watertight\"");
     read_choice("sphere_test", s.accuracy.spheres, parse_sphere_test, "\"quadratic\", \"cancellation_free\"");
     read_choice("fresnel", s.accuracy.fresnel, parse_fresnel_model, "\"schlick\", \"exact\"");
+    read_choice("multiple_scattering", s.accuracy.multiple_scattering, parse_multiple_scattering, "\"none\", \"kulla_conty\"");
     read_choice("sampler", s.estimator.sampler, parse_sampler, "\"independent\", \"stratified\", \"sobol\"");
     read_choice("light_sampling", s.estimator.light_sampling, parse_light_sampling, "\"nee\", \"mis\"");
     read_choice("caustics", s.estimator.caustics, parse_caustic_paths,
