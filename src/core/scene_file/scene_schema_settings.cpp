@@ -149,7 +149,7 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     read_choice("light_sampling", s.estimator.light_sampling, parse_light_sampling, "\"nee\", \"mis\"");
     read_choice("caustics", s.estimator.caustics, parse_caustic_paths,
                 "\"path\", \"light_tracing\", \"photons\"");
-    read_choice("filter", s.filter.kind, parse_filter_kind, "\"box\", \"gaussian\", \"blackman_harris\"");
+    read_choice("filter", s.filter.kind, parse_filter_kind, "\"box\", \"gaussian\", \"blackman_harris\", \"mitchell\"");
     s.filter.width = default_filter_width(s.filter.kind);
     if (const Json* width = in.optional(j, "filter_width")) {
         const std::string width_path = member_path(path, "filter_width");
