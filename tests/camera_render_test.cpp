@@ -1,6 +1,7 @@
 // The cameras in the renderer: the thin lens and the pixel filters estimated by light tracing
 // agree with the camera paths' estimate of the same caustic, both integrators give the same bits
-// with them, and a pinhole of aperture 0 renders the pinhole's bits.
+// with them, a pinhole of aperture 0 renders the pinhole's bits, and Mitchell's signed sample
+// weights reach the film and keep a constant image's mean.
 
 #include <cmath>
 #include <vector>
@@ -92,11 +93,50 @@ TEST(CameraRender, ThinLensAndGaussianFilterLightTracingAgreesWithPathTracing) {
     expect_light_tracing_agrees(PixelFilterSettings{FilterKind::gaussian, 2.5f});
 }
 
+// Mitchell's negative lobes: the camera samples' weights and light tracing's splat weights carry
+// the sign, and the two estimates of the caustic still agree.
+TEST(CameraRender, ThinLensAndMitchellFilterLightTracingAgreesWithPathTracing) {
+    expect_light_tracing_agrees(PixelFilterSettings{FilterKind::mitchell, 4.0f});
+}
+
+// Each splat's expected total over the pixels is the filter's integral, 1, whatever its shape: the
+// light-traced part of the image sums to the same with Mitchell as with the box (the same light
+// paths, the caustic far from the border), within 5 standard errors of the difference between
+// seeds. Splats by |f| without their sign would add (integral |f| / integral f)^2 = 1.145 times it.
+TEST(CameraRender, MitchellSplatsKeepTheLightTracedTotal) {
+    const int seeds = 6;
+    std::vector<double> ratios;
+    for (int s = 0; s < seeds; ++s) {
+        double total[2] = {0.0, 0.0};
+        for (const int mitchell : {0, 1}) {
+            const PixelFilterSettings filter = mitchell ? PixelFilterSettings{FilterKind::mitchell, 4.0f} : PixelFilterSettings{};
+            const SceneDescription d = lens_caustic(64, uint64_t(40 + s), CausticPaths::light_tracing, 0.0f, filter);
+            const Film film = test::render_film(d, Integrator::wavefront, 2).film;
+            for (uint32_t p = 0; p < film.pixel_total(); ++p) total[mitchell] += film.pixel_splat_mean(p).x;
+        }
+        ASSERT_GT(total[0], 0.0);
+        ratios.push_back(total[1] / total[0]);
+    }
+    double mean = 0.0, variance = 0.0;
+    for (double r : ratios) mean += r / seeds;
+    for (double r : ratios) variance += (r - mean) * (r - mean) / (seeds - 1);
+    const double standard_error = std::sqrt(variance / seeds);
+    EXPECT_NEAR(mean, 1.0, 5.0 * standard_error) << "spread " << standard_error;
+    EXPECT_LT(5.0 * standard_error, 0.05) << "too noisy to tell the sign";
+}
+
 // Both integrators, any threads, tiles, ISA and accelerator: the same bits with the lens, a wide
 // filter and light tracing, for each sampler; and for the orthographic camera.
 TEST(CameraRender, LensFilterAndOrthographicAreTheSameBitsForAnySchedule) {
     for (SamplerKind sampler : {SamplerKind::independent, SamplerKind::stratified, SamplerKind::sobol}) {
         SceneDescription d = lens_caustic(4, 7, CausticPaths::light_tracing, 0.2f, {FilterKind::blackman_harris, 3.0f});
+        d.settings.estimator.sampler = sampler;
+        const test::RenderedFilm r = test::render_film(d, Integrator::wavefront, 2);
+        EXPECT_GT(r.result.counts.camera_connections, 0u);
+        test::expect_same_film_for_any_schedule(d, r.film);
+    }
+    for (SamplerKind sampler : {SamplerKind::independent, SamplerKind::sobol}) {
+        SceneDescription d = lens_caustic(4, 7, CausticPaths::light_tracing, 0.2f, {FilterKind::mitchell, 4.0f});
         d.settings.estimator.sampler = sampler;
         const test::RenderedFilm r = test::render_film(d, Integrator::wavefront, 2);
         EXPECT_GT(r.result.counts.camera_connections, 0u);
@@ -127,6 +167,37 @@ TEST(CameraRender, ApertureZeroAndUnitBoxAreThePinholeBits) {
     SceneDescription wide = pinhole;
     wide.settings.filter = {FilterKind::box, 1.5f};
     EXPECT_FALSE(test::render_film(wide, Integrator::wavefront, 2).film == expected);
+}
+
+// A scene whose every camera ray sees radiance 1 (a closed cube of emitters with albedo 0): with
+// the box every sample is 1, so every pixel is exactly 1; with Mitchell each sample is its weight,
+// +-(integral |f| / integral f)^2, whose mean is 1: the image's mean stays 1 within 5 standard
+// errors (from the film's own per-pixel variances), the weights vary (they reach the film) and
+// are negative in some samples (some pixel's variance needs values on both sides of 1 far
+// enough apart), and both integrators give the same bits.
+TEST(CameraRender, MitchellKeepsAConstantImagesMeanWithSignedWeights) {
+    SceneDescription d = test::furnace_cube(0.0f, 1.0f);
+    d.settings.spp = 64;
+    const Film box = test::render_film(d, Integrator::wavefront, 2).film;
+    for (uint32_t p = 0; p < box.pixel_total(); ++p) ASSERT_EQ(box.pixel_mean(p), glm::dvec3(1.0)) << p;
+
+    d.settings.filter = {FilterKind::mitchell, 4.0f};
+    const Film mitchell = test::render_film(d, Integrator::wavefront, 2).film;
+    EXPECT_TRUE(mitchell == test::render_film(d, Integrator::reference, 3).film);
+    double sum = 0.0, variance_of_sum = 0.0, largest_variance = 0.0;
+    uint64_t samples = 0;
+    for (uint32_t p = 0; p < mitchell.pixel_total(); ++p) {
+        const uint32_t n = mitchell.pixel_count(p);
+        sum += mitchell.pixel_sum(p).x;
+        variance_of_sum += mitchell.pixel_sample_variance(p).x * n;
+        largest_variance = std::max(largest_variance, mitchell.pixel_sample_variance(p).x);
+        samples += n;
+        EXPECT_EQ(mitchell.pixel_sum(p).x, mitchell.pixel_sum(p).y);
+    }
+    EXPECT_NEAR(sum / double(samples), 1.0, 5.0 * std::sqrt(variance_of_sum) / double(samples));
+    // Weights of +c^2 and -c^2 (c a little above 1) in one pixel's 64 samples: variance near 4
+    // times the negative share; positive weights alone would all be c^2 with variance 0.
+    EXPECT_GT(largest_variance, 0.05);
 }
 
 }  // namespace

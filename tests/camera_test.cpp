@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/camera/camera.h"
+#include "core/checkpoint/checkpoint_settings.h"
 #include "core/scene/scene.h"
 #include "core/sampling/samplers.h"
 #include "camera_importance.h"
@@ -209,8 +210,22 @@ TEST(RenderSection, FilterAndItsWidth) {
     }), kSource);
     EXPECT_EQ(b.settings.filter.kind, FilterKind::blackman_harris);
     EXPECT_FLOAT_EQ(b.settings.filter.width, 2.0f);
-    expect_scene_error(with_render([](Json& r) { r["filter"] = "mitchell"; }),
-                       "render.filter: must be one of \"box\", \"gaussian\", \"blackman_harris\"");
+    // Mitchell's default width is its cubic's natural support, 4 pixels (pbrt-v4's radius 2).
+    const SceneDescription m = parse_scene_json(with_render([](Json& r) { r["filter"] = "mitchell"; }), kSource);
+    EXPECT_EQ(m.settings.filter.kind, FilterKind::mitchell);
+    EXPECT_FLOAT_EQ(m.settings.filter.width, 4.0f);
+    // A filter other than the unit box is an image setting a checkpoint stores and must match,
+    // and can be stored (a setting's value is one token).
+    bool stored = false;
+    for (const NamedSetting& s : image_settings(m.settings)) {
+        if (s.name != "filter") continue;
+        stored = true;
+        EXPECT_EQ(s.value, "mitchell/4");
+        EXPECT_EQ(s.value.find_first_of(" \t\n"), std::string::npos);
+    }
+    EXPECT_TRUE(stored);
+    expect_scene_error(with_render([](Json& r) { r["filter"] = "lanczos"; }),
+                       "render.filter: must be one of \"box\", \"gaussian\", \"blackman_harris\", \"mitchell\"");
     expect_scene_error(with_render([](Json& r) { r["filter_width"] = 0; }), "render.filter_width: must be greater than 0");
     expect_scene_error(with_render([](Json& r) { r["filter_width"] = -1; }), "render.filter_width: must be greater than 0");
     expect_scene_error(with_render([](Json& r) { r["filter_width"] = 17; }), "render.filter_width: must be greater than 0 and at most 16");

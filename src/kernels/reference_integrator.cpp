@@ -26,7 +26,8 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
     };
     const PathSeed path = path_seed<E>(scene, pixel, sample);
     const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
-    Ray ray = camera_ray<E>(scene, pixel, path);
+    const CameraRay camera = camera_ray<E>(scene, pixel, path);
+    Ray ray = camera.ray;
     ++counts.camera_rays;
     glm::vec3 radiance(0.0f);
     glm::vec3 throughput(1.0f);
@@ -94,7 +95,8 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
         bsdf_pdf = next->bsdf_pdf;
         count_environment = next->count_environment;
     }
-    return radiance;
+    // The pixel filter's weight, as the wavefront film loop applies it (wavefront_renderer.cpp).
+    return radiance * camera.weight;
 }
 
 template <typename E>

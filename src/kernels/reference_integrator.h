@@ -37,7 +37,9 @@ struct PathVertexRecord {
     glm::vec3 photons_added;
 };
 
-// Radiance of sample `sample` of pixel `pixel`. If `record` is given, each vertex is appended.
+// Radiance of sample `sample` of pixel `pixel`, times the pixel filter's sample weight (what the
+// film receives; the weight is 1 but for a filter with negative lobes, and the vertices' records
+// are unweighted). If `record` is given, each vertex is appended.
 // Rays are traced through `bvh` when given (the scalar kernels: the same hits as the flat
 // loops, found in logarithmic time), else against every primitive. If `first_surface` is
 // given (default-constructed), the path's AOV data is recorded in it. `photons`: when the scene

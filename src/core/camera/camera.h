@@ -24,6 +24,13 @@ inline CameraBasis camera_basis(const CameraDescription& desc) {
     return {forward, right, glm::cross(right, forward)};
 }
 
+// Whether a basis vector came out unit length in float: look_at - eye or up too short (1e-30
+// squares to 0) or too long (1e20 squares to infinity) does not, and would render black.
+inline bool is_unit_in_float(const glm::vec3& v) {
+    const float length = glm::length(v);
+    return std::isfinite(length) && std::fabs(length - 1.0f) < 1e-3f;
+}
+
 class Camera {
 public:
     Camera() = default;

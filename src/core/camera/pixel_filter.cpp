@@ -16,6 +16,14 @@ double profile(FilterKind kind, double d, double r) {
         const auto g = [&](double x) { return std::exp(-x * x / (2.0 * sigma * sigma)); };
         return std::max(0.0, g(d) - g(r));
     }
+    if (kind == FilterKind::mitchell) {
+        // Mitchell & Netravali 1988, "Reconstruction Filters in Computer Graphics", eq. 8, with
+        // B = C = 1/3 (their recommendation): a cubic over |x| < 2, here stretched over |d| < r.
+        constexpr double B = 1.0 / 3.0, C = 1.0 / 3.0;
+        const double x = std::fabs(2.0 * d / r);
+        if (x < 1.0) return ((12 - 9 * B - 6 * C) * x * x * x + (-18 + 12 * B + 6 * C) * x * x + (6 - 2 * B)) / 6.0;
+        return ((-B - 6 * C) * x * x * x + (6 * B + 30 * C) * x * x + (-12 * B - 48 * C) * x + (8 * B + 24 * C)) / 6.0;
+    }
     // Blackman-Harris, four terms (Harris 1978): t in [0, 1] across the support.
     const double t = (d + r) / (2.0 * r), tau = 2.0 * 3.14159265358979323846 * t;
     return 0.35875 - 0.48829 * std::cos(tau) + 0.14128 * std::cos(2.0 * tau) - 0.01168 * std::cos(3.0 * tau);
@@ -23,19 +31,23 @@ double profile(FilterKind kind, double d, double r) {
 
 }  // namespace
 
-float default_filter_width(FilterKind kind) { return kind == FilterKind::box ? 1.0f : 1.5f; }
+float default_filter_width(FilterKind kind) {
+    if (kind == FilterKind::box) return 1.0f;
+    return kind == FilterKind::mitchell ? 4.0f : 1.5f;
+}
 
 const char* name_of(FilterKind k) {
     switch (k) {
         case FilterKind::box: return "box";
         case FilterKind::gaussian: return "gaussian";
         case FilterKind::blackman_harris: return "blackman_harris";
+        case FilterKind::mitchell: return "mitchell";
     }
     return "?";
 }
 
 std::optional<FilterKind> parse_filter_kind(const std::string& s) {
-    for (FilterKind k : {FilterKind::box, FilterKind::gaussian, FilterKind::blackman_harris})
+    for (FilterKind k : {FilterKind::box, FilterKind::gaussian, FilterKind::blackman_harris, FilterKind::mitchell})
         if (s == name_of(k)) return k;
     return std::nullopt;
 }
@@ -46,30 +58,44 @@ PixelFilter::PixelFilter(const PixelFilterSettings& settings) : width_(settings.
     const double r = 0.5 * double(settings.width), bin = 2.0 * r / kBins;
     bin_width_ = float(bin);
     std::array<double, kBins> values{};
-    double total = 0.0;
-    for (int i = 0; i < kBins; ++i) total += values[i] = profile(settings.kind, -r + (i + 0.5) * bin, r);
+    double total = 0.0, total_abs = 0.0;
+    for (int i = 0; i < kBins; ++i) {
+        values[i] = profile(settings.kind, -r + (i + 0.5) * bin, r);
+        total += values[i];
+        total_abs += std::fabs(values[i]);
+    }
+    // Exactly 1 for a non-negative filter, so its samples' weights multiply nothing.
+    abs_over_signed_ = float(total_abs / total);
     double cumulative = 0.0;
     for (int i = 0; i < kBins; ++i) {
-        density_[i] = float(values[i] / (total * bin));
-        cdf_[i] = float(cumulative / total);
-        cumulative += values[i];
+        density_[i] = float(std::fabs(values[i]) / (total_abs * bin));
+        weight_[i] = values[i] < 0.0 ? -abs_over_signed_ : abs_over_signed_;
+        cdf_[i] = float(cumulative / total_abs);
+        cumulative += std::fabs(values[i]);
     }
     cdf_[kBins] = 1.0f;
 }
 
-float PixelFilter::sample_axis(float u) const {
+PixelFilter::AxisSample PixelFilter::sample_axis(float u) const {
     // The last bin whose cdf is <= u; u < 1, so it is below kBins.
     const int i = int(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()) - 1;
     const float span = cdf_[i + 1] - cdf_[i];
     const float within = span > 0.0f ? std::min((u - cdf_[i]) / span, 0x1.fffffep-1f) : 0.5f;
-    return (float(i) + within) * bin_width_ - radius();
+    return {(float(i) + within) * bin_width_ - radius(), weight_[i]};
 }
 
 float PixelFilter::density(float d) const {
     const float r = radius();
     if (!(d >= -r && d < r)) return 0.0f;
     if (!tabulated_) return 1.0f / width_;
-    return density_[std::min(kBins - 1, int((d + r) / bin_width_))];
+    return density_[bin_of(d)];
+}
+
+float PixelFilter::value(float d) const {
+    const float r = radius();
+    if (!(d >= -r && d < r)) return 0.0f;
+    if (!tabulated_) return 1.0f / width_;
+    return density_[bin_of(d)] * weight_[bin_of(d)];
 }
 
 PixelFilter::AxisChoice PixelFilter::choose_pixel(float x, float u) const {
@@ -89,7 +115,8 @@ PixelFilter::AxisChoice PixelFilter::choose_pixel(float x, float u) const {
             break;
         }
     }
-    return {chosen, sum};
+    if (!has_negative_lobes()) return {chosen, sum};
+    return {chosen, sum * weight_[bin_of(x - (float(chosen) + 0.5f))]};
 }
 
 }  // namespace wt

@@ -35,9 +35,10 @@ std::vector<NamedSetting> image_settings(const RenderSettings& s) {
     // The minimum changes nothing while adaptive sampling is off, so it does not keep such a
     // render from being resumed with another.
     if (s.adaptive.enabled()) settings.push_back({"adaptive_min_spp", std::to_string(s.adaptive.min_spp)});
-    // The filter only when it is not the unit box, which every render had before there was a choice.
+    // The filter only when it is not the unit box, which every render had before there was a choice;
+    // one token ("mitchell/4"), as the format's settings are.
     if (!s.filter.is_unit_box())
-        settings.push_back({"filter", std::string(name_of(s.filter.kind)) + " " + exact(s.filter.width)});
+        settings.push_back({"filter", std::string(name_of(s.filter.kind)) + "/" + exact(s.filter.width)});
     // Multiple scattering only when on, which no render before it was.
     if (s.accuracy.multiple_scattering != MultipleScattering::none)
         settings.push_back({"multiple_scattering", name_of(s.accuracy.multiple_scattering)});

@@ -12,6 +12,7 @@ enum class FilterKind : uint8_t {
     box,              // uniform over a square filter_width pixels wide
     gaussian,         // exp(-x^2 / 2 sigma^2) minus its value at the edge, sigma = filter_width / 6
     blackman_harris,  // the four-term Blackman-Harris window over filter_width
+    mitchell,         // Mitchell-Netravali cubic, B = C = 1/3, over filter_width; negative lobes
 };
 
 struct PixelFilterSettings {
@@ -26,7 +27,8 @@ struct PixelFilterSettings {
 // areas, which is a blur, not a reconstruction filter.
 constexpr float kMaxFilterWidth = 16.0f;
 
-// filter_width when the scene gives none: 1 for the box, 1.5 for the others (Cycles' default).
+// filter_width when the scene gives none: 1 for the box, 4 for Mitchell (its cubic's natural
+// support, pbrt-v4's radius 2), 1.5 for the others (Cycles' default).
 float default_filter_width(FilterKind kind);
 
 const char* name_of(FilterKind);

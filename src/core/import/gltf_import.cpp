@@ -5,40 +5,22 @@
 // (gltf_lights.h). The accessors are read and bounds-checked by
 // gltf_accessor.h, since a buffer too short for them would otherwise be read past its end.
 
-#include <cctype>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <unordered_set>
 
-#include <sys/stat.h>
-
-#include <glm/gtc/quaternion.hpp>
-#include <glm/gtc/type_ptr.hpp>
 #include <tiny_gltf.h>
 
 #include "core/import/gltf_accessor.h"
 #include "core/import/gltf_lights.h"
+#include "core/import/gltf_load.h"
 #include "core/import/gltf_materials.h"
-#include "core/import/gltf_version.h"
-#include "core/import/mapped_file.h"
+#include "core/import/gltf_nodes.h"
 #include "core/import/mesh_file.h"
 #include "core/import/primitive_triangles.h"
-#include "core/system/regular_file.h"
 
 namespace wt {
 namespace {
-
-glm::dmat4 local_transform(const tinygltf::Node& node) {
-    if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glm
-    glm::dmat4 m(1.0);
-    if (node.translation.size() == 3)
-        m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
-    if (node.rotation.size() == 4)  // glTF stores x, y, z, w
-        m *= glm::mat4_cast(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
-    if (node.scale.size() == 3) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
-    return m;
-}
 
 const char* mode_name(int mode) {
     static const char* const kNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP", "TRIANGLES", "TRIANGLE_STRIP", "TRIANGLE_FAN"};
@@ -51,20 +33,7 @@ public:
         : path_(path), model_(model), use_(use) {}
 
     ImportedMesh read() {
-        std::vector<int> roots;
-        if (!model_.scenes.empty()) {
-            const int scene = model_.defaultScene >= 0 ? model_.defaultScene : 0;
-            if (std::size_t(scene) >= model_.scenes.size()) fail("scene " + std::to_string(scene) + " does not exist");
-            roots = model_.scenes[std::size_t(scene)].nodes;
-        } else {
-            // No scene: every node that is nobody's child is a root.
-            std::vector<bool> is_child(model_.nodes.size(), false);
-            for (const tinygltf::Node& n : model_.nodes)
-                for (int c : n.children)
-                    if (c >= 0 && std::size_t(c) < is_child.size()) is_child[std::size_t(c)] = true;
-            for (std::size_t i = 0; i < model_.nodes.size(); ++i)
-                if (!is_child[i]) roots.push_back(int(i));
-        }
+        const std::vector<int> roots = gltf_scene_roots(path_, model_);
         // A mesh that several nodes place is read once and placed by each (the scene stores it
         // once, as instances: core/instances/).
         std::vector<uint32_t> users(model_.meshes.size(), 0);
@@ -74,7 +43,9 @@ public:
         for (std::size_t m = 0; m < users.size(); ++m)
             if (users[m] > 1) shared_index_[m] = mesh_.shared_count++;
         shared_read_.assign(mesh_.shared_count, false);
-        for (int root : roots) visit(root, glm::dmat4(1.0), 0);
+        walk_gltf_nodes(path_, model_, roots, [&](int index, const tinygltf::Node& node, const glm::dmat4& world) {
+            place_node(index, node, world);
+        });
         // Points and lines alone are not "an empty mesh": say what the file has instead.
         if (mesh_.triangles.empty() && !first_skipped_.empty())
             fail("no triangles: its primitives are points or lines (" + first_skipped_ +
@@ -95,7 +66,7 @@ public:
 private:
     [[noreturn]] void fail(const std::string& what) const { throw MeshFileError(path_ + ": " + what); }
 
-    // How many times the walk from the roots places each mesh. Only counts: visit() says what is
+    // How many times the walk from the roots places each mesh. Only counts: the walk says what is
     // wrong with a bad hierarchy, and this walk stops where it would.
     void count_uses(int index, int depth, uint64_t& walked, std::vector<uint32_t>& users) const {
         if (index < 0 || std::size_t(index) >= model_.nodes.size() || depth > 256 || ++walked > (uint64_t(1) << 20)) return;
@@ -104,13 +75,8 @@ private:
         for (int child : node.children) count_uses(child, depth + 1, walked, users);
     }
 
-    void visit(int index, const glm::dmat4& parent, int depth) {
-        if (index < 0 || std::size_t(index) >= model_.nodes.size()) fail("node " + std::to_string(index) + " does not exist");
-        if (depth > 256) fail("node " + std::to_string(index) + ": the node hierarchy is deeper than 256 (a cycle?)");
-        // Nodes may share children, so a small file can name exponentially many instances.
-        if (++visits_ > (uint64_t(1) << 20)) fail("the node hierarchy places more than 2^20 node instances");
-        const tinygltf::Node& node = model_.nodes[std::size_t(index)];
-        const glm::dmat4 world = parent * local_transform(node);
+    // What one node places: its mesh (read once if shared) and its light.
+    void place_node(int index, const tinygltf::Node& node, const glm::dmat4& world) {
         if (node.mesh >= 0) {
             if (std::size_t(node.mesh) >= model_.meshes.size())
                 fail("node " + std::to_string(index) + ": mesh " + std::to_string(node.mesh) + " does not exist");
@@ -129,7 +95,6 @@ private:
             }
         }
         if (const int light = gltf_node_light(node); light != -1) read_gltf_light(path_, model_, light, world, mesh_);
-        for (int child : node.children) visit(child, world, depth + 1);
     }
 
     std::string accessor_name(int index, const std::string& role, const std::string& where) const {
@@ -266,75 +231,16 @@ private:
     bool any_have_normals_ = false;
     bool any_have_uvs_ = false;
     MeshFileUse use_;
-    uint64_t visits_ = 0;
     bool any_material_ = false;
     std::unordered_set<std::string> skipped_;  // primitives of points or lines, noted once each
     std::string first_skipped_;
 };
 
-// tinygltf quotes a data URI it cannot decode whole, and one may be megabytes of base64.
-std::string with_data_uris_shortened(std::string message) {
-    const auto is_base64 = [](char c) { return std::isalnum((unsigned char)c) || c == '+' || c == '/' || c == '='; };
-    for (std::size_t at = message.find("base64,"); at != std::string::npos; at = message.find("base64,", at + 1)) {
-        const std::size_t start = at + 7;
-        std::size_t end = start;
-        while (end < message.size() && is_base64(message[end])) ++end;
-        if (end - start > 32) message.replace(start + 16, end - start - 16, "... (" + std::to_string(end - start) + " characters)");
-    }
-    return message;
-}
-
-// tinygltf's own FileExists opens the file, which blocks on a FIFO: stat() does not.
-bool referenced_file_exists(const std::string& path, void*) {
-    struct stat st {};
-    return ::stat(path.c_str(), &st) == 0;
-}
-
-// A .bin (or image) file the glTF names, read as tinygltf would, but only if it is a regular
-// file within the mesh-file limit: a uri of /dev/zero or a FIFO would otherwise never return.
-bool read_referenced_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
-    try {
-        const RegularFile in = open_regular_file(path, kMaxMeshFileBytes);
-        out->resize(std::size_t(in.size));
-        if (in.size > 0 && std::fread(out->data(), 1, out->size(), in.file.get()) != out->size()) {
-            if (err) *err += path + ": cannot read all of its " + std::to_string(in.size) + " bytes\n";
-            return false;
-        }
-        return true;
-    } catch (const InputFileError& e) {
-        if (err) *err += std::string(e.what()) + "\n";
-        return false;
-    }
-}
-
 }  // namespace
 
 ImportedMesh read_gltf_file(const std::string& path, MeshFileUse use) {
-    tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(keep_encoded_image, nullptr);
-    loader.SetFsCallbacks({&referenced_file_exists, &tinygltf::ExpandFilePath, &read_referenced_file, &tinygltf::WriteWholeFile, nullptr});
-    tinygltf::Model model;
-    std::string err, warn;
-    {
-        // Unmapped before the accessors are read: the model holds its own copy of the buffers.
-        const MappedFile file(path);
-        if (file.size() > UINT32_MAX) throw MeshFileError(path + ": larger than 4 GiB, more than glTF's loader takes");
-        const std::string base_dir = std::filesystem::path(path).parent_path().string();
-        // The content decides, not the extension: a .glb starts with the magic "glTF".
-        const bool binary = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
-        if (binary) check_glb_container_version(path, file.data(), file.size());
-        const bool ok =
-            binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, file.data(), unsigned(file.size()), base_dir)
-                   : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(file.data()),
-                                                unsigned(file.size()), base_dir);
-        if (!ok) {
-            explain_gltf_refusal(path, file.data(), file.size(), binary);
-            throw MeshFileError(path + ": " + with_data_uris_shortened(first_line(err.empty() ? warn : err)));
-        }
-    }
-    check_gltf_version_and_extensions(path, model);
-    ImportedMesh mesh = GltfReader(path, model, use).read();
-    return mesh;
+    const tinygltf::Model model = load_gltf_model(path);
+    return GltfReader(path, model, use).read();
 }
 
 }  // namespace wt

@@ -7,7 +7,6 @@
 #include "core/system/regular_file.h"
 
 namespace wt {
-namespace {
 
 std::string lower_extension(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
@@ -16,17 +15,14 @@ std::string lower_extension(const std::string& path) {
 }
 
 // The libraries' own messages for a missing file vary ("Cannot open file [x]", "File not found");
-// errno says why in the same words for every format. A FIFO or device (/dev/zero) is refused
-// here, before a reader could block on it or read it without end.
-void check_readable(const std::string& path) {
+// errno says why in the same words for every format.
+void check_readable_mesh_file(const std::string& path) {
     try {
         open_regular_file(path, kMaxMeshFileBytes);
     } catch (const InputFileError& e) {
         throw MeshFileError(e.what());
     }
 }
-
-}  // namespace
 
 std::string first_line(const std::string& text) {
     std::string s = text.substr(0, text.find('\n'));
@@ -42,7 +38,7 @@ ImportedMesh read_mesh_file(const std::string& path, MeshFileUse use) {
     else if (ext == ".gltf" || ext == ".glb") reader = read_gltf_file;
     else
         throw MeshFileError(path + ": unknown mesh file extension \"" + ext + "\" (allowed: .obj, .ply, .gltf, .glb)");
-    check_readable(path);
+    check_readable_mesh_file(path);
     ImportedMesh mesh = reader(path, use);
     if (mesh.triangles.empty()) throw MeshFileError(path + ": the file has no triangles (an empty mesh)");
     if (mesh.positions.size() > UINT32_MAX)

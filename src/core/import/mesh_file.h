@@ -22,6 +22,12 @@ struct MeshFileUse {
 };
 ImportedMesh read_mesh_file(const std::string& path, MeshFileUse use = {});
 
+// The file's extension in lower case, with its dot (".glb").
+std::string lower_extension(const std::string& path);
+// Throws MeshFileError (errno's words) unless `path` is a regular file within the mesh-file
+// limit: a FIFO or device (/dev/zero) is refused before a reader could block on it.
+void check_readable_mesh_file(const std::string& path);
+
 // The first line of a library's message, which is often several lines of which the first says it.
 std::string first_line(const std::string& text);
 

@@ -27,15 +27,21 @@ inline PathSeed path_seed(const Scene& scene, uint32_t pixel, uint32_t sample) {
 
 // The camera ray of the path's sample in pixel `pixel` (row-major index), placed about the
 // pixel by the sampler and the pixel filter (core/camera/pixel_filter.h), and on the lens for a
-// thin lens: the pinhole draws no lens sample.
+// thin lens: the pinhole draws no lens sample. `weight` multiplies the path's radiance before it
+// reaches the film: the filter's sample weight, 1 but for a filter with negative lobes.
+struct CameraRay {
+    Ray ray;
+    float weight;
+};
+
 template <typename E>
-inline Ray camera_ray(const Scene& scene, uint32_t pixel, const PathSeed& path) {
+inline CameraRay camera_ray(const Scene& scene, uint32_t pixel, const PathSeed& path) {
     const uint32_t width = uint32_t(scene.settings.width);
     const typename E::Sampler random(path, 0, uint32_t(scene.settings.shadow_rays));
-    const glm::vec2 offset = scene.pixel_filter.offset(random.pixel_offset(scene.settings.seed, pixel, path.sample));
-    const float x = float(pixel % width) + offset.x, y = float(pixel / width) + offset.y;
-    if (!scene.camera.has_lens()) return scene.camera.generate_ray(x, y);
-    return scene.camera.generate_ray(x, y, E::Sampler::lens_position(path, scene.settings.seed, pixel));
+    const PixelFilter::Sample filtered = scene.pixel_filter.sample(random.pixel_offset(scene.settings.seed, pixel, path.sample));
+    const float x = float(pixel % width) + filtered.offset.x, y = float(pixel / width) + filtered.offset.y;
+    if (!scene.camera.has_lens()) return {scene.camera.generate_ray(x, y), filtered.weight};
+    return {scene.camera.generate_ray(x, y, E::Sampler::lens_position(path, scene.settings.seed, pixel)), filtered.weight};
 }
 
 // Radiance emitted towards the incoming ray: lights are one-sided, emitting on the side their

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cfloat>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "core/scene_file/scene_error.h"
@@ -107,6 +108,11 @@ std::string integer_problem(const Json& j, uint64_t lo, uint64_t hi) {
 
 void Reader::fail(const std::string& path, const std::string& what) const {
     throw SceneError(source_ + ": " + (path.empty() ? "(top level)" : path) + ": " + what);
+}
+
+std::string Reader::resolve(const std::string& file) const {
+    const std::filesystem::path relative(file);
+    return relative.is_absolute() ? file : (std::filesystem::path(source_).parent_path() / relative).string();
 }
 
 void Reader::expect_object(const Json& j, const std::string& path) const {

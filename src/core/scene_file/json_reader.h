@@ -41,6 +41,9 @@ public:
     const std::string& source() const { return source_; }
 
     [[noreturn]] void fail(const std::string& path, const std::string& what) const;
+    // A file the scene names (a mesh, a texture, a map, a glTF camera): relative to the scene
+    // file's directory unless absolute.
+    std::string resolve(const std::string& file) const;
 
     void expect_object(const Json& j, const std::string& path) const;
     void expect_array(const Json& j, const std::string& path) const;

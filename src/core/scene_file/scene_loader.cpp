@@ -13,19 +13,17 @@ SceneDescription parse_scene_json(const std::string& text, const std::string& so
     in.check_keys(root, "", {"camera", "render", "materials", "meshes", "shapes", "lights"});
 
     SceneDescription scene;
-    // Fixed order, whatever the file's: shapes need the materials.
-    scene.camera = read_camera(in, in.required(root, "camera", ""), "camera");
-    if (const Json* render = in.optional(root, "render")) {
-        scene.settings = read_render(in, *render, "render");
-        // Light tracing joins light paths to the camera, which an orthographic camera (one ray
-        // direction) cannot be joined to; left unsaid, its caustics are the camera paths' (scene.cpp).
-        const Json* caustics = in.optional(*render, "caustics");
-        if (caustics && scene.camera.projection == Projection::orthographic &&
-            scene.settings.estimator.caustics != CausticPaths::path)
-            in.fail("render.caustics", std::string("\"") + name_of(scene.settings.estimator.caustics) +
-                                           "\" needs a perspective camera (light paths cannot be joined to an "
-                                           "orthographic one); use \"path\"");
-    }
+    // Fixed order, whatever the file's: shapes need the materials, a glTF camera's notes the image size.
+    const Json* render = in.optional(root, "render");
+    if (render) scene.settings = read_render(in, *render, "render");
+    scene.camera = read_camera(in, in.required(root, "camera", ""), "camera", scene.settings, scene.notes);
+    // Light tracing joins light paths to the camera, which an orthographic camera (one ray
+    // direction) cannot be joined to; left unsaid, its caustics are the camera paths' (scene.cpp).
+    const Json* caustics = render ? in.optional(*render, "caustics") : nullptr;
+    if (caustics && scene.camera.projection == Projection::orthographic && scene.settings.estimator.caustics != CausticPaths::path)
+        in.fail("render.caustics", std::string("\"") + name_of(scene.settings.estimator.caustics) +
+                                       "\" needs a perspective camera (light paths cannot be joined to an "
+                                       "orthographic one); use \"path\"");
     scene.materials = read_materials(in, in.required(root, "materials", ""), "materials", scene.textures);
     read_shapes(in, in.required(root, "shapes", ""), "shapes", scene, in.optional(root, "meshes"));
     // The list's lights first, then those the mesh files placed (read with the shapes).

@@ -14,7 +14,16 @@
 
 namespace wt {
 
-CameraDescription read_camera(const Reader& in, const Json& j, const std::string& path);
+// The camera, written out or taken from a glTF file ("gltf"); `render` (the image size) and
+// `notes` for what a glTF camera asks that the image does not give.
+CameraDescription read_camera(const Reader& in, const Json& j, const std::string& path, const RenderSettings& render,
+                              std::vector<std::string>& notes);
+// {"gltf": FILE, "name" or "index", "transform", and the thin lens's keys} (scene_schema_camera_gltf.cpp).
+CameraDescription read_gltf_camera_section(const Reader& in, const Json& j, const std::string& path,
+                                           const RenderSettings& render, std::vector<std::string>& notes);
+// A perspective camera's aperture_radius, and focus_distance or focus_on (the plane in focus
+// through a point, square to the view axis from camera.eye to camera.look_at).
+void read_thin_lens(const Reader& in, const Json& j, const std::string& path, CameraDescription& camera);
 RenderSettings read_render(const Reader& in, const Json& j, const std::string& path);
 // Textures the materials name are appended to `textures`.
 std::vector<Material> read_materials(const Reader& in, const Json& j, const std::string& path,

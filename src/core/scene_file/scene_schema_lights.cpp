@@ -1,5 +1,4 @@
 #include <cmath>
-#include <filesystem>
 #include <memory>
 
 #include <glm/geometric.hpp>
@@ -54,9 +53,7 @@ float read_number_in(const Reader& in, const Json& j, const char* key, const std
 // would be light the sampling could not weigh, and is refused (not clamped), naming the pixel.
 std::shared_ptr<const EnvironmentMap> read_environment_map(const Reader& in, const std::string& file,
                                                            const std::string& field) {
-    const std::filesystem::path relative(file);
-    const std::string resolved =
-        relative.is_absolute() ? file : (std::filesystem::path(in.source()).parent_path() / relative).string();
+    const std::string resolved = in.resolve(file);
     RgbImage image;
     try {
         image = read_rgb_image(resolved);

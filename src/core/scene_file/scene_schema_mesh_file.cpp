@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -127,9 +126,7 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
     const std::string file_path = member_path(path, "file");
     const std::string file = in.text(in.required(j, "file", path), file_path);
     if (file.empty()) in.fail(file_path, "must not be empty");
-    const std::filesystem::path relative(file);
-    const std::string resolved =
-        relative.is_absolute() ? file : (std::filesystem::path(in.source()).parent_path() / relative).string();
+    const std::string resolved = in.resolve(file);
 
     const std::string material_path = member_path(path, "material");
     const Json& material = in.required(j, "material", path);

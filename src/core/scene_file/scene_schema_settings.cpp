@@ -30,17 +30,24 @@ void read_projection(const Reader& in, const Json& j, const std::string& path, C
         else if (name != "perspective")
             in.fail(projection_path, "must be one of \"perspective\", \"orthographic\", got " + describe(*projection));
     }
-    const auto positive = [](float v) { return v > 0.0f; };
     if (camera.projection == Projection::orthographic) {
         for (const char* key : {"fov_degrees", "aperture_radius", "focus_distance", "focus_on"})
             if (in.optional(j, key))
                 in.fail(member_path(path, key), "is for the perspective camera; an orthographic one takes width_world");
         const Json& width = in.required(j, "width_world", path);
-        camera.width_world = camera_number(in, width, path, "width_world", positive, "a positive number of scene units");
+        camera.width_world = camera_number(in, width, path, "width_world", [](float v) { return v > 0.0f; },
+                                           "a positive number of scene units");
         return;
     }
     if (in.optional(j, "width_world"))
         in.fail(member_path(path, "width_world"), "is for \"projection\": \"orthographic\" only");
+    read_thin_lens(in, j, path, camera);
+}
+
+}  // namespace
+
+void read_thin_lens(const Reader& in, const Json& j, const std::string& path, CameraDescription& camera) {
+    const auto positive = [](float v) { return v > 0.0f; };
     if (const Json* aperture = in.optional(j, "aperture_radius"))
         camera.aperture_radius = camera_number(in, *aperture, path, "aperture_radius", [](float v) { return v >= 0.0f; },
                                                "non-negative (0 is the pinhole)");
@@ -63,10 +70,10 @@ void read_projection(const Reader& in, const Json& j, const std::string& path, C
     }
 }
 
-}  // namespace
-
-CameraDescription read_camera(const Reader& in, const Json& j, const std::string& path) {
+CameraDescription read_camera(const Reader& in, const Json& j, const std::string& path, const RenderSettings& render,
+                              std::vector<std::string>& notes) {
     in.expect_object(j, path);
+    if (in.optional(j, "gltf")) return read_gltf_camera_section(in, j, path, render, notes);
     in.check_keys(j, path, {"eye", "look_at", "up", "fov_degrees", "projection", "width_world", "aperture_radius",
                             "focus_distance", "focus_on"});
     CameraDescription camera;
@@ -94,19 +101,15 @@ CameraDescription read_camera(const Reader& in, const Json& j, const std::string
 
     // The renderer builds the basis in float, where 1e-30 squares to 0 and 1e20 to infinity:
     // a basis that is not unit length there renders a black image, so refuse it here.
-    const auto unit = [](const glm::vec3& v) {
-        const float length = glm::length(v);
-        return std::isfinite(length) && std::fabs(length - 1.0f) < 1e-3f;
-    };
     const glm::vec3 difference = camera.look_at - camera.eye;
     if (!std::isfinite(difference.x) || !std::isfinite(difference.y) || !std::isfinite(difference.z))
         in.fail(member_path(path, "look_at"), "look_at - eye overflows a 32-bit float (eye " + format_vec3(camera.eye) +
                                                   ", look_at " + format_vec3(camera.look_at) + ")");
     const CameraBasis basis = camera_basis(camera);
-    if (!unit(basis.forward))
+    if (!is_unit_in_float(basis.forward))
         in.fail(member_path(path, "look_at"), "look_at - eye = " + format_vec3(difference) +
                                                   " cannot be normalised in 32-bit float (too short or too long)");
-    if (!unit(basis.right) || !unit(basis.up))
+    if (!is_unit_in_float(basis.right) || !is_unit_in_float(basis.up))
         in.fail(member_path(path, "up"), "cannot be used in 32-bit float: cross(forward, up) cannot be normalised "
                                          "(up too short or too long), got " + format_vec3(camera.up));
     read_projection(in, j, path, camera);
@@ -147,7 +150,7 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     read_choice("light_sampling", s.estimator.light_sampling, parse_light_sampling, "\"nee\", \"mis\"");
     read_choice("caustics", s.estimator.caustics, parse_caustic_paths,
                 "\"path\", \"light_tracing\", \"photons\"");
-    read_choice("filter", s.filter.kind, parse_filter_kind, "\"box\", \"gaussian\", \"blackman_harris\"");
+    read_choice("filter", s.filter.kind, parse_filter_kind, "\"box\", \"gaussian\", \"blackman_harris\", \"mitchell\"");
     s.filter.width = default_filter_width(s.filter.kind);
     if (const Json* width = in.optional(j, "filter_width")) {
         const std::string width_path = member_path(path, "filter_width");

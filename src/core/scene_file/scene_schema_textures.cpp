@@ -1,4 +1,3 @@
-#include <filesystem>
 
 #include "core/image_io/image_error.h"
 #include "core/scene_file/scene_schema.h"
@@ -28,9 +27,7 @@ glm::vec3 read_color_or_texture(const Reader& in, const Json& j, const std::stri
     const std::string file_path = member_path(path, "texture");
     const std::string file = in.text(in.required(j, "texture", path), file_path);
     if (file.empty()) in.fail(file_path, "must not be empty");
-    const std::filesystem::path relative(file);
-    const std::string resolved =
-        relative.is_absolute() ? file : (std::filesystem::path(in.source()).parent_path() / relative).string();
+    const std::string resolved = in.resolve(file);
     TextureImage image;
     image.name = resolved;
     image.srgb = colour_file_is_srgb(resolved);

@@ -20,18 +20,21 @@ struct PathTable {
     AlignedVector<uint32_t> pixel, sample;
     AlignedVector<uint64_t> key;  // random-number key, from (seed, pixel, sample)
     AlignedVector<float> radiance_r, radiance_g, radiance_b;
+    AlignedVector<float> filter_weight;  // CameraRay::weight: multiplies the radiance on the film
     // The albedo, normal and depth AOVs' data per path; empty (and never touched) without them.
     AlignedVector<FirstSurface> first_surface;
 
     void resize(std::size_t n, bool with_aovs) {
         pixel.resize(n), sample.resize(n), key.resize(n);
-        radiance_r.resize(n), radiance_g.resize(n), radiance_b.resize(n);
+        radiance_r.resize(n), radiance_g.resize(n), radiance_b.resize(n), filter_weight.resize(n);
         first_surface.resize(with_aovs ? n : 0);
     }
     void add_radiance(uint32_t slot, const glm::vec3& c) {
         radiance_r[slot] += c.x, radiance_g[slot] += c.y, radiance_b[slot] += c.z;
     }
     glm::vec3 radiance(uint32_t slot) const { return {radiance_r[slot], radiance_g[slot], radiance_b[slot]}; }
+    // What the film receives: the radiance times the filter's weight, as trace_path returns it.
+    glm::vec3 weighted_radiance(uint32_t slot) const { return radiance(slot) * filter_weight[slot]; }
 };
 
 // Rays still alive and what the next hit needs to know about the path that cast them.
@@ -120,11 +123,11 @@ struct WavefrontWorkspace {
     HitQueue hits;
     ShadowQueue shadows;
 
-    // What the constructor allocates, per path: the path table (2 x 4 + 8 + 3 x 4 bytes, and the
+    // What the constructor allocates, per path: the path table (2 x 4 + 8 + 4 x 4 bytes, and the
     // first surface with AOVs), two ray queues (10 x 4 + 4 + 1), the hits (3 x 4 + 4); per shadow
     // ray (10 x 4 + 4 + 1).
     static constexpr std::size_t bytes_needed(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs) {
-        const std::size_t path_table = 28 + (with_aovs ? sizeof(FirstSurface) : 0);
+        const std::size_t path_table = 32 + (with_aovs ? sizeof(FirstSurface) : 0);
         return batch_paths * (path_table + 2 * 45 + 16) + batch_paths * shadow_rays_per_hit * 45;
     }
 

@@ -14,8 +14,10 @@ inline void generate_path(const Scene& scene, uint32_t pixel, uint32_t s, uint32
     paths.sample[slot] = s;
     paths.key[slot] = path.key;
     paths.radiance_r[slot] = paths.radiance_g[slot] = paths.radiance_b[slot] = 0.0f;
+    const CameraRay camera = camera_ray<E>(scene, pixel, path);
+    paths.filter_weight[slot] = camera.weight;
     // Emission seen from the camera counts in full (no light sample competes: bsdf_pdf 0).
-    rays.push<E::mis>(PathContinuation{camera_ray<E>(scene, pixel, path), glm::vec3(1.0f), true, false, 0.0f}, slot);
+    rays.push<E::mis>(PathContinuation{camera.ray, glm::vec3(1.0f), true, false, 0.0f}, slot);
 }
 
 template <typename E>

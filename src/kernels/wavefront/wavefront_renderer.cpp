@@ -35,7 +35,7 @@ void render_batches(const Scene& scene, const IntersectContext& context, uint32_
             ++counts.samples;
             float extra[Film::max_extra_channels];
             if (with_aovs) aov_sample_values(aovs, ws.paths.first_surface[slot], extra);
-            if (!film.add_sample(ws.paths.pixel[slot], ws.paths.radiance(slot), with_aovs ? extra : nullptr))
+            if (!film.add_sample(ws.paths.pixel[slot], ws.paths.weighted_radiance(slot), with_aovs ? extra : nullptr))
                 ++counts.nonfinite_samples;
         }
     }
