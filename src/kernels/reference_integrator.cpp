@@ -53,7 +53,8 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
                                 throughput, glm::vec3(0.0f), 0, 0, glm::vec3(0.0f), 0.0f, 0, glm::vec3(0.0f)};
 
         if (count_emission) {
-            vertex.emission_added = emission_added<E>(scene, m, surface, ray, hit.t, throughput, bsdf_pdf, bounce);
+            vertex.emission_added = emission_added<E, true, kListedLights>(scene, m, surface, ray, hit.t, throughput, bsdf_pdf,
+                                                                           bounce, hit.prim);
             radiance += vertex.emission_added;
         }
         if (photons && gathers_photons(scene, m, bounce, specular_light_elsewhere)) {

@@ -33,4 +33,16 @@ std::optional<LightSampling> parse_light_sampling(const std::string& s) {
     return parse_one_of(s, {LightSampling::nee, LightSampling::mis});
 }
 
+const char* name_of(LightSelection l) {
+    switch (l) {
+        case LightSelection::power: return "power";
+        case LightSelection::bvh: return "bvh";
+        case LightSelection::area: break;
+    }
+    return "area";
+}
+std::optional<LightSelection> parse_light_selection(const std::string& s) {
+    return parse_one_of(s, {LightSelection::area, LightSelection::power, LightSelection::bvh});
+}
+
 }  // namespace wt

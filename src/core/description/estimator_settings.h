@@ -21,6 +21,14 @@ enum class LightSampling : uint8_t {
     mis,  // light samples and the BSDF-sampled direction both count, power heuristic (Veach 1997)
 };
 
+// How a light sample picks one of the emissive triangles (core/lights/emitter_selection.h).
+// Light paths (light tracing, photons) start by area whichever is chosen.
+enum class LightSelection : uint8_t {
+    area,   // in proportion to area: pdf 1 / total area on every light, whatever it emits
+    power,  // in proportion to power (area times luminance of the emission)
+    bvh,    // by a light tree, in proportion to each node's importance to the shading point
+};
+
 // Who finds caustic paths: a diffuse surface lit by the lights through one or more mirror or
 // glass bounces (diffuse -> specular... -> light), seen directly (camera -> diffuse) or itself
 // seen through a mirror or glass (camera -> specular... -> diffuse).
@@ -39,6 +47,7 @@ constexpr float kPhotonRadiusMax = 1e18f;
 struct EstimatorSettings {
     SamplerKind sampler = SamplerKind::stratified;
     LightSampling light_sampling = LightSampling::nee;
+    LightSelection light_selection = LightSelection::area;
     // Per-channel upper bound on each indirect contribution (see clamp_indirect() in
     // core/path/estimator.h for exactly which); 0 means off.
     float clamp_indirect = 0.0f;
@@ -60,8 +69,10 @@ struct EstimatorSettings {
 const char* name_of(SamplerKind);
 const char* name_of(LightSampling);
 const char* name_of(CausticPaths);
+const char* name_of(LightSelection);
 std::optional<CausticPaths> parse_caustic_paths(const std::string&);
 std::optional<SamplerKind> parse_sampler(const std::string&);
 std::optional<LightSampling> parse_light_sampling(const std::string&);
+std::optional<LightSelection> parse_light_selection(const std::string&);
 
 }  // namespace wt

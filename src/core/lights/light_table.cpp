@@ -20,6 +20,7 @@ LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>
         const glm::vec3 v0 = triangles.vertex0(i), e1 = triangles.edge1(i), e2 = triangles.edge2(i);
         emitters_.push_back({v0, e1, e2, triangles.normal(i), m.emission, 0.0f, magnitude(v0), magnitude(e1), magnitude(e2),
                              parallelogram});
+        triangles_.push_back(i);
     }
     total_area_ = float(running_area);
     pdf_area_ = 1.0f / total_area_;

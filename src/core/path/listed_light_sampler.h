@@ -43,14 +43,19 @@ struct IncidentLight {
 };
 
 // Light sample (u_choice, u0, u1) of the scene's lights from `position`; false if it cannot
-// contribute (an area light seen from behind, outside a spot's cone, a zero pdf).
-inline bool sample_incident_light(const Scene& scene, const glm::vec3& position, float u_choice, float u0, float u1,
-                                  IncidentLight& out) {
+// contribute (an area light seen from behind, outside a spot's cone, a zero pdf). An emitter
+// picked by power or the light tree (Scene::emitter_selection) is picked from `selection_point`:
+// the vertex's shading point moved off its surface, as the origin of the BSDF-sampled ray whose
+// emission emission_added weighs with the same pdf.
+inline bool sample_incident_light(const Scene& scene, const glm::vec3& position, const glm::vec3& selection_point,
+                                  float u_choice, float u0, float u1, IncidentLight& out) {
     const SceneLights& lights = scene.listed_lights;
     float rescaled = 0.0f;
     const int which = lights.pick(u_choice, rescaled);
     if (which == -1) {
-        const LightSample light = scene.lights.sample(scene.triangles, rescaled, u0, u1);  // pdf includes the selection
+        LightSample light;  // its pdf includes the selection
+        if (scene.emitter_selection.empty()) light = scene.lights.sample(scene.triangles, rescaled, u0, u1);
+        else if (!scene.emitter_selection.sample(scene.lights, selection_point, rescaled, u0, u1, light)) return false;
         const glm::vec3 to_light = light.position - position;
         const float dist2 = glm::dot(to_light, to_light);
         if (!(dist2 > 0.0f)) return false;
@@ -143,7 +148,8 @@ public:
         const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
         const UniformPair point = random_.pair(base + dim::light_u);
         IncidentLight light;
-        if (!sample_incident_light(scene_, position_, random_(base + dim::light_choice), point.first, point.second, light))
+        if (!sample_incident_light(scene_, position_, vertex_.selection_point(), random_(base + dim::light_choice), point.first,
+                                   point.second, light))
             return false;
         glm::vec3 f_cos;
         float bsdf_pdf = 0.0f;
@@ -191,6 +197,8 @@ struct DiffuseListedVertex {
         origin = at.ray_origin;
         return true;
     }
+    // The origin of this vertex's BSDF-sampled ray (continue_path moves it off the same side).
+    const glm::vec3& selection_point() const { return at.ray_origin; }
 };
 
 // A rough vertex: the microfacet BSDF, towards both sides for rough glass; always weighed
@@ -217,6 +225,10 @@ struct GlossyListedVertex {
         origin = cos_x > 0.0f ? origin_front : origin_behind;
         return true;
     }
+    // The origin of a reflected BSDF-sampled ray. A transmitted one starts from origin_behind, a
+    // rounding error's width away: its emission's pdf is asked from there, and may differ from
+    // the one the light sample used in the last bits.
+    const glm::vec3& selection_point() const { return origin_front; }
 };
 
 // Every light sample of the vertex (diffuse or rough; none elsewhere), to emit(const ShadowRay&).

@@ -62,11 +62,11 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         }
         const uint8_t flags = rays.count_emission[i];
         if (flags & RayQueue::kCountEmission)
-            paths.add_radiance(slot, emission_added<E, kRough>(scene, m, surface, ray, hit.t, throughput,
-                                                               E::mis || (kRough && (flags & RayQueue::kRoughPdf))
-                                                                   ? rays.bsdf_pdf[i]
-                                                                   : 0.0f,
-                                                               bounce));
+            paths.add_radiance(slot, emission_added<E, kRough, kListedLights>(scene, m, surface, ray, hit.t, throughput,
+                                                                              E::mis || (kRough && (flags & RayQueue::kRoughPdf))
+                                                                                  ? rays.bsdf_pdf[i]
+                                                                                  : 0.0f,
+                                                                              bounce, hit.prim));
         const bool elsewhere = flags & RayQueue::kSpecularLightElsewhere;
         if (photons && gathers_photons(scene, m, bounce, elsewhere))
             paths.add_radiance(slot, throughput * gather_photons(photons->map(path.sample), m, surface, ray.direction,
