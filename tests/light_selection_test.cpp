@@ -8,10 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include "core/checkpoint/checkpoint_settings.h"
 #include "core/lights/emitter_selection.h"
 #include "core/lights/light_tree.h"
 #include "core/sampling/rng.h"
 #include "core/scene/scene.h"
+#include "core/scene_file/scene_loader.h"
 #include "many_lights_scene.h"
 #include "statistics.h"
 
@@ -195,6 +197,36 @@ TEST(EmitterSelection, NothingIsBuiltForAreaOrForOneEmitter) {
     EXPECT_FALSE(tree.emitter_selection.empty());
     EXPECT_FALSE(tree.listed_lights.empty());
     EXPECT_EQ(tree.listed_lights.area_probability(), 1.0f);
+}
+
+// render.light_selection: read from the scene file, refused when unknown, and an image setting a
+// checkpoint stores only when it is not "area" (every checkpoint before it was by area).
+TEST(EmitterSelection, SceneFileKeyAndCheckpointSetting) {
+    const auto scene_text = [](const std::string& render_extra) {
+        return R"({"camera": {"eye": [0, 0, 1], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov_degrees": 60},
+                   "render": {"width": 4, "height": 4)" + render_extra + R"(},
+                   "materials": {"lamp": {"type": "lambertian", "albedo": [0, 0, 0], "emission": [1, 1, 1]}},
+                   "shapes": [{"type": "quad", "material": "lamp", "vertices": [[0, 0, 2], [0, 1, 2], [1, 1, 2], [1, 0, 2]]}]})";
+    };
+    const SceneDescription plain = parse_scene_json(scene_text(""), "test.json");
+    EXPECT_EQ(plain.settings.estimator.light_selection, LightSelection::area);
+    const auto stored = [](const RenderSettings& s) {
+        for (const NamedSetting& n : image_settings(s))
+            if (n.name == "light_selection") return n.value;
+        return std::string();
+    };
+    EXPECT_EQ(stored(plain.settings), "");
+    for (const char* name : {"power", "bvh"}) {
+        const SceneDescription d = parse_scene_json(scene_text(std::string(R"(, "light_selection": ")") + name + "\""), "test.json");
+        EXPECT_STREQ(name_of(d.settings.estimator.light_selection), name);
+        EXPECT_EQ(stored(d.settings), name);
+    }
+    try {
+        parse_scene_json(scene_text(R"(, "light_selection": "tree")"), "test.json");
+        ADD_FAILURE() << "accepted light_selection \"tree\"";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("render.light_selection"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
