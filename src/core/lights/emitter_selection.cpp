@@ -37,8 +37,7 @@ EmitterSelection::EmitterSelection(LightSelection how, const LightTable& table, 
     emitter_of_triangle_.assign(triangles.size(), kNoEmitter);
     for (std::size_t k = 0; k < table.size(); ++k) {
         const uint32_t i = table.triangle_of(k);
-        const double area = (triangles.is_parallelogram(i) ? 1.0 : 0.5) *
-                            double(glm::length(glm::cross(triangles.edge1(i), triangles.edge2(i))));
+        const double area = emitter_area(triangles, i);
         power[k] = kPiDouble * area * luminance(materials[triangles.material[i]].emission);
         inverse_area_[k] = float(1.0 / area);
         emitter_of_triangle_[i] = uint32_t(k);

@@ -13,7 +13,7 @@ LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>
         const Material& m = materials[triangles.material[i]];
         if (!m.is_emissive()) continue;
         const bool parallelogram = triangles.is_parallelogram(i);
-        const double area = (parallelogram ? 1.0 : 0.5) * double(glm::length(glm::cross(triangles.edge1(i), triangles.edge2(i))));
+        const double area = emitter_area(triangles, i);
         if (area <= 0.0) continue;  // the loader rejects degenerate lights; built-in scenes may not
         running_area += area;
         cumulative.push_back(running_area);

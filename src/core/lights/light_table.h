@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/geometry/geometry_soa.h"
@@ -16,6 +17,12 @@
 #include "core/description/scene_description.h"
 
 namespace wt {
+
+// The area of scene triangle i, a parallelogram's whole: what the light table, the lights'
+// power and the selection by power weigh an emitter by.
+inline double emitter_area(const TriangleSoA& triangles, uint32_t i) {
+    return (triangles.is_parallelogram(i) ? 1.0 : 0.5) * double(glm::length(glm::cross(triangles.edge1(i), triangles.edge2(i))));
+}
 
 struct LightSample {
     glm::vec3 position;
