@@ -19,8 +19,9 @@ for side in "${sides[@]}"; do
   area_product=""
   for how in area power bvh; do
     exr=$out/${side}_$how.exr
-    cpu=$( { /usr/bin/time -f "%U %S" "$wavetrace" render "$scene" --spp "$spp" --threads 2 --light-selection "$how" \
-               --aov variance -o "$exr" >/dev/null 2>/dev/null; } 2>&1 | tail -1 | awk '{print $1 + $2}')
+    /usr/bin/time -f "%U %S" -o "$out/time.txt" "$wavetrace" render "$scene" --spp "$spp" --threads 2 \
+      --light-selection "$how" --aov variance -o "$exr" >/dev/null 2>&1
+    cpu=$(awk '{print $1 + $2}' "$out/time.txt")
     # The mean over pixels of the variance AOV's three channels (the last three before "(float)").
     variance=$(oiiotool --stats "$exr" 2>/dev/null | awk '/Stats Avg/ { print ($(NF-3) + $(NF-2) + $(NF-1)) / 3 }')
     product=$(awk -v c="$cpu" -v v="$variance" 'BEGIN { printf "%.6g", c * v }')

@@ -41,6 +41,7 @@ std::vector<LightBounds> scattered_emitters(int n, uint64_t key) {
     return e;
 }
 
+const glm::vec3 kNormal = glm::normalize(glm::vec3(1.0f, 2.0f, 3.0f));  // of the surface at the shading points
 const glm::vec3 kShadingPoints[] = {{5.0f, 5.0f, 5.0f}, {-3.0f, 2.0f, 1.0f}, {9.5f, 0.5f, 9.9f}, {50.0f, -20.0f, 4.0f}};
 
 TEST(LightTree, IsConsistentAndDeterministic) {
@@ -51,7 +52,7 @@ TEST(LightTree, IsConsistentAndDeterministic) {
     EXPECT_EQ(a.node_count(), 2u * 700u - 1u);
     EXPECT_LT(a.depth(), 40);
     for (const glm::vec3& p : kShadingPoints)
-        for (uint32_t k = 0; k < 700; ++k) ASSERT_EQ(a.probability(p, k), b.probability(p, k));
+        for (uint32_t k = 0; k < 700; ++k) ASSERT_EQ(a.probability(p, kNormal, k), b.probability(p, kNormal, k));
 }
 
 // Where every emitter faces the point, the probabilities sum to one. Elsewhere the descent can
@@ -64,13 +65,13 @@ TEST(LightTree, ProbabilitiesSumToOneFromEveryPoint) {
     const LightTree tree(emitters);
     for (const glm::vec3& p : {glm::vec3(5.0f, 5.0f, 40.0f), glm::vec3(-3.0f, 2.0f, 60.0f), glm::vec3(9.5f, 0.5f, 35.0f)}) {
         double sum = 0.0;
-        for (uint32_t k = 0; k < emitters.size(); ++k) sum += double(tree.probability(p, k));
+        for (uint32_t k = 0; k < emitters.size(); ++k) sum += double(tree.probability(p, glm::vec3(0.0f, 0.0f, 1.0f), k));
         EXPECT_NEAR(sum, 1.0, 1e-5) << "from " << p.x << " " << p.y << " " << p.z;
     }
     const LightTree any_way(scattered_emitters(500, 12));
     for (const glm::vec3& p : kShadingPoints) {
         double sum = 0.0;
-        for (uint32_t k = 0; k < emitters.size(); ++k) sum += double(any_way.probability(p, k));
+        for (uint32_t k = 0; k < emitters.size(); ++k) sum += double(any_way.probability(p, kNormal, k));
         EXPECT_LE(sum, 1.0 + 1e-5);
         EXPECT_GT(sum, 0.5);
     }
@@ -86,17 +87,17 @@ TEST(LightTree, PicksFollowTheProbabilityQuery) {
         std::vector<double> observed(emitters.size() + 1, 0.0), expected(emitters.size() + 1, 0.0);
         for (int s = 0; s < n; ++s) {
             LightTree::Pick pick;
-            if (!tree.pick(p, uniform(21, uint32_t(s), 0), pick)) {
+            if (!tree.pick(p, kNormal, uniform(21, uint32_t(s), 0), pick)) {
                 observed.back() += 1.0;
                 continue;
             }
-            ASSERT_EQ(pick.probability, tree.probability(p, pick.emitter));
+            ASSERT_EQ(pick.probability, tree.probability(p, kNormal, pick.emitter));
             observed[pick.emitter] += 1.0;
         }
         double sum = 0.0;
         for (uint32_t k = 0; k < emitters.size(); ++k) {
-            expected[k] = double(n) * double(tree.probability(p, k));
-            sum += double(tree.probability(p, k));
+            expected[k] = double(n) * double(tree.probability(p, kNormal, k));
+            sum += double(tree.probability(p, kNormal, k));
         }
         expected.back() = double(n) * std::max(0.0, 1.0 - sum);
         EXPECT_GT(test::chi_square_test(observed, expected).p_value, kAlpha) << "from " << p.x << " " << p.y << " " << p.z;
@@ -118,7 +119,8 @@ TEST(LightTree, AgreesWithPowerWhereOrientationAndDistanceDoNotMatter) {
     }
     const LightTree tree(emitters);
     const glm::vec3 far(0.3f, 0.15f, 1000.0f);
-    for (uint32_t k = 0; k < 6; ++k) EXPECT_NEAR(tree.probability(far, k), power[k] / total, 1e-3f) << "emitter " << k;
+    for (uint32_t k = 0; k < 6; ++k)
+        EXPECT_NEAR(tree.probability(far, glm::vec3(0.0f, 0.0f, -1.0f), k), power[k] / total, 1e-3f) << "emitter " << k;
 }
 
 // An emitter the point is behind gets nothing; the others share everything.
@@ -129,8 +131,26 @@ TEST(LightTree, NeverPicksAnEmitterThePointIsBehind) {
     emitters[0].power = emitters[1].power = 1.0f;
     const LightTree tree(emitters);
     const glm::vec3 above(0.5f, 0.0f, 2.0f);
-    EXPECT_EQ(tree.probability(above, 0), 1.0f);
-    EXPECT_EQ(tree.probability(above, 1), 0.0f);
+    EXPECT_EQ(tree.probability(above, glm::vec3(0.0f, 0.0f, 1.0f), 0), 1.0f);
+    EXPECT_EQ(tree.probability(above, glm::vec3(0.0f, 0.0f, 1.0f), 1), 0.0f);
+}
+
+// The receiver's cosine: an emitter in the plane of the point's surface (a lamp on the same
+// wall) faces the point but cannot light it. Its bound is the sine of the half-angle its box's
+// bounding sphere subtends (conservative: never zero), so it gets a small share of what a
+// receiver turned towards it would give it.
+TEST(LightTree, NeverPicksAnEmitterInTheReceiversTangentPlane) {
+    std::vector<LightBounds> emitters(2, LightBounds{});
+    // Emitter 0 on the wall x = 0, facing into the room; emitter 1 off the wall, facing it.
+    emitters[0].lo = glm::vec3(0.0f), emitters[0].hi = glm::vec3(0.0f, 0.1f, 0.1f), emitters[0].axis = {1, 0, 0};
+    emitters[1].lo = glm::vec3(0.5f, 0.0f, 2.0f), emitters[1].hi = glm::vec3(0.5f, 0.1f, 2.1f), emitters[1].axis = {-1, 0, 0};
+    emitters[0].power = emitters[1].power = 1.0f;
+    const LightTree tree(emitters);
+    const glm::vec3 on_wall(0.0f, 3.0f, 0.05f), wall_normal(1.0f, 0.0f, 0.0f);
+    const float in_plane = tree.probability(on_wall, wall_normal, 0);
+    const float facing = tree.probability(on_wall, glm::normalize(-on_wall), 0);  // a receiver turned towards it
+    EXPECT_GT(in_plane, 0.0f);
+    EXPECT_LT(in_plane, 0.25f * facing);
 }
 
 // The scene's selection: power shares of pi A L, and from any point the pdf a light sample
@@ -142,13 +162,17 @@ TEST(EmitterSelection, PowerSharesAndSamplePdfsMatchTheQuery) {
         const EmitterSelection& s = scene.emitter_selection;
         ASSERT_FALSE(s.empty());
         ASSERT_EQ(scene.lights.size(), 144u);
-        for (const glm::vec3& p : {glm::vec3(0.0f, 0.0f, 0.01f), glm::vec3(1.9f, -1.9f, 1.0f), glm::vec3(0.7f, 0.7f, 0.61f)}) {
+        // Points on the floor, a wall and the metal block's top, with their surfaces' normals.
+        const std::pair<glm::vec3, glm::vec3> points[] = {{{0.0f, 0.0f, 0.01f}, {0.0f, 0.0f, 1.0f}},
+                                                          {{1.99f, -1.5f, 1.0f}, {-1.0f, 0.0f, 0.0f}},
+                                                          {{0.7f, 0.7f, 0.61f}, {0.0f, 0.0f, 1.0f}}};
+        for (const auto& [p, n] : points) {
             double sum = 0.0;
-            for (uint32_t k = 0; k < scene.lights.size(); ++k) sum += double(s.probability(p, k));
+            for (uint32_t k = 0; k < scene.lights.size(); ++k) sum += double(s.probability(p, n, k));
             EXPECT_NEAR(sum, 1.0, 1e-5);
             for (uint32_t j = 0; j < 2000; ++j) {
                 LightSample light;
-                if (!s.sample(scene.lights, p, uniform(5, j, 0), uniform(5, j, 1), uniform(5, j, 2), light)) continue;
+                if (!s.sample(scene.lights, p, n, uniform(5, j, 0), uniform(5, j, 1), uniform(5, j, 2), light)) continue;
                 // The triangle the point lies on: the emitter whose plane and box hold it.
                 bool found = false;
                 for (uint32_t k = 0; k < scene.lights.size() && !found; ++k) {
@@ -160,7 +184,7 @@ TEST(EmitterSelection, PowerSharesAndSamplePdfsMatchTheQuery) {
                         glm::all(glm::lessThanEqual(light.position, hi + 1e-5f)) &&
                         std::fabs(glm::dot(light.position - v0, scene.triangles.normal(t))) < 1e-5f) {
                         found = true;
-                        EXPECT_EQ(light.pdf_area, s.pdf_area(p, t));
+                        EXPECT_EQ(light.pdf_area, s.pdf_area(p, n, t));
                     }
                 }
                 EXPECT_TRUE(found);
@@ -177,7 +201,7 @@ TEST(EmitterSelection, PowerSharesAndSamplePdfsMatchTheQuery) {
                 total += power[k];
             }
             for (uint32_t k = 0; k < scene.lights.size(); ++k)
-                EXPECT_NEAR(s.probability(glm::vec3(0.0f), k), power[k] / total, 1e-6 + 1e-5 * power[k] / total);
+                EXPECT_NEAR(s.probability(glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f), k), power[k] / total, 1e-6 + 1e-5 * power[k] / total);
         }
     }
 }

@@ -7,8 +7,8 @@
 //
 // Its pdfs include the area lights' own selection among the scene's lights (SceneLights), as
 // LightTable's do. pdf_area() answers for any triangle a BSDF-sampled ray hits, from the point
-// the ray left, with the same arithmetic the sample was drawn with: the MIS weights of the two
-// strategies (light sample, BSDF sample) then sum to one.
+// the ray left and that vertex's normal, with the same arithmetic the sample was drawn with: the
+// MIS weights of the two strategies (light sample, BSDF sample) then sum to one.
 //
 // Built only when the setting asks for it and the scene has two emitters or more; then the
 // integrators run the listed lights' samplers (core/path/listed_light_sampler.h), and a scene
@@ -40,20 +40,21 @@ public:
     // The probability the area lights are picked with among the scene's lights (SceneLights).
     void set_selection_probability(float p) { selection_probability_ = p; }
 
-    // The probability emitter k (LightTable's index) is picked from `from`, the area lights' own
-    // selection not included.
-    float probability(const glm::vec3& from, uint32_t k) const {
-        return how_ == LightSelection::bvh ? tree_.probability(from, k) : power_.probability(k);
+    // The probability emitter k (LightTable's index) is picked for a surface at `from` of normal
+    // `normal` (either side), the area lights' own selection not included.
+    float probability(const glm::vec3& from, const glm::vec3& normal, uint32_t k) const {
+        return how_ == LightSelection::bvh ? tree_.probability(from, normal, k) : power_.probability(k);
     }
 
-    // Light sample (u_choice, u0, u1) of the emitters from `from`; false when none can be picked
-    // (the tree: no emitter faces `from`). out.pdf_area includes every choice.
-    bool sample(const LightTable& table, const glm::vec3& from, float u_choice, float u0, float u1, LightSample& out) const {
+    // Light sample (u_choice, u0, u1) of the emitters for (from, normal); false when none can be
+    // picked (the tree: no emitter can light it). out.pdf_area includes every choice.
+    bool sample(const LightTable& table, const glm::vec3& from, const glm::vec3& normal, float u_choice, float u0, float u1,
+                LightSample& out) const {
         uint32_t k = 0;
         float p = 0.0f;
         if (how_ == LightSelection::bvh) {
             LightTree::Pick pick;
-            if (!tree_.pick(from, u_choice, pick)) return false;
+            if (!tree_.pick(from, normal, u_choice, pick)) return false;
             k = pick.emitter, p = pick.probability;
         } else {
             float rescaled = 0.0f;
@@ -65,13 +66,13 @@ public:
         return out.pdf_area > 0.0f;
     }
 
-    // The pdf per unit area with which sample() from `from` lands on scene triangle `triangle`:
-    // 0 for a triangle that is no emitter (and for an instance's, which never are).
-    float pdf_area(const glm::vec3& from, uint32_t triangle) const {
+    // The pdf per unit area with which sample() for (from, normal) lands on scene triangle
+    // `triangle`: 0 for a triangle that is no emitter (and for an instance's, which never are).
+    float pdf_area(const glm::vec3& from, const glm::vec3& normal, uint32_t triangle) const {
         if (triangle >= emitter_of_triangle_.size()) return 0.0f;
         const uint32_t k = emitter_of_triangle_[triangle];
         if (k == kNoEmitter) return 0.0f;
-        return selection_probability_ * probability(from, k) * inverse_area_[k];
+        return selection_probability_ * probability(from, normal, k) * inverse_area_[k];
     }
 
 private:

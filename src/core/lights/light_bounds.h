@@ -25,12 +25,14 @@ struct LightBounds {
         return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x);
     }
 
-    // An upper bound, up to the distance clamp, on what the emitters can send to `p`: power times
-    // the largest cosine at which any normal in the cone can face any point of the box seen from
-    // p, over the squared distance to the box's centre (the paper's eq. 3 without the receiver's
-    // cosine: a rough glass vertex receives from both sides). Zero only when no emitter in the
-    // box can face p, so no emitter that could light p is ever given probability zero.
-    float importance(const glm::vec3& p) const {
+    // An upper bound, up to the distance clamp, on what the emitters can send to a surface at `p`
+    // of normal `n`: power times the largest cosine at which any normal in the cone can face any
+    // point of the box seen from p, times the largest |cosine| between n and a direction from p
+    // into the box (both sides: a rough glass vertex receives from behind too), over the squared
+    // distance to the box's centre (the paper's eq. 3; pbrt-v4's LightBounds::Importance). Zero
+    // only when no emitter in the box can face p, or the whole box lies in p's tangent plane, so
+    // no emitter that could light p is ever given probability zero.
+    float importance(const glm::vec3& p, const glm::vec3& n) const {
         const glm::vec3 c = centre();
         const glm::vec3 to_p = p - c;
         const float d2 = glm::dot(to_p, to_p);
@@ -57,7 +59,11 @@ struct LightBounds {
         }
         const float cos_p = cos_x < cos_b ? cos_x * cos_b + sin_x * sin_b : 1.0f;
         if (!(cos_p > 0.0f)) return 0.0f;  // theta' >= theta_e = pi/2: every emitter faces away
-        return power * cos_p / d2;
+        // The receiver: theta_i between n and the direction to the centre, less theta_b.
+        const float cos_i = std::fabs(glm::dot(n, to_p)) / d;
+        const float sin_i = std::sqrt(std::max(0.0f, 1.0f - cos_i * cos_i));
+        const float cos_ip = cos_i < cos_b ? cos_i * cos_b + sin_i * sin_b : 1.0f;
+        return power * cos_p * cos_ip / d2;
     }
 };
 

@@ -131,12 +131,12 @@ uint32_t LightTree::build(std::vector<Item>& items, std::size_t begin, std::size
     return index;
 }
 
-bool LightTree::pick(const glm::vec3& p, float u, Pick& out) const {
+bool LightTree::pick(const glm::vec3& p, const glm::vec3& n, float u, Pick& out) const {
     constexpr float kBelowOne = 0x1.fffffep-1f;
     uint32_t i = 0;
     float probability = 1.0f;
     while (!nodes_[i].leaf) {
-        const float p_first = first_child_probability(i, p);
+        const float p_first = first_child_probability(i, p, n);
         if (p_first < 0.0f) return false;
         if (u < p_first) {
             i = i + 1;
@@ -152,12 +152,12 @@ bool LightTree::pick(const glm::vec3& p, float u, Pick& out) const {
     return probability > 0.0f;
 }
 
-float LightTree::probability(const glm::vec3& p, uint32_t emitter) const {
+float LightTree::probability(const glm::vec3& p, const glm::vec3& n, uint32_t emitter) const {
     const Trail trail = trails_[emitter];
     uint32_t i = 0;
     float probability = 1.0f;
     for (uint32_t d = 0; d < trail.length; ++d) {
-        const float p_first = first_child_probability(i, p);
+        const float p_first = first_child_probability(i, p, n);
         if (p_first < 0.0f) return 0.0f;
         if ((trail.turns >> d) & 1u) {
             i = nodes_[i].second_child_or_emitter;

@@ -1,8 +1,8 @@
 #pragma once
 // The light tree (Conty Estevez & Kulla 2018, "Importance Sampling of Many Lights with Adaptive
 // Tree Splitting"; pbrt-v4's BVHLightSampler): a binary tree over the emissive triangles whose
-// nodes hold LightBounds. A light sample at a point descends from the root, taking each child
-// with probability in proportion to its importance to that point, and ends at one emitter; the
+// nodes hold LightBounds. A light sample at a point (and its surface normal) descends from the
+// root, taking each child with probability in proportion to its importance there, and ends at one emitter; the
 // product of the choices is the emitter's probability. probability() repeats the same descent
 // along the emitter's path from the root, with the same arithmetic, so the pdf a BSDF-sampled ray
 // weighs an emitter with is the one its light samples were drawn with.
@@ -34,11 +34,12 @@ public:
         uint32_t emitter;
         float probability;
     };
-    // The emitter u in [0, 1) picks from `p`; false when no emitter can face p. u is rescaled to
-    // [0, 1) at each choice (pbrt-v4 does the same), so one number makes the whole descent.
-    bool pick(const glm::vec3& p, float u, Pick& out) const;
-    // The probability pick() picks `emitter` from `p` with.
-    float probability(const glm::vec3& p, uint32_t emitter) const;
+    // The emitter u in [0, 1) picks for the surface at `p` of normal `n`; false when no emitter
+    // can light it. u is rescaled to [0, 1) at each choice (pbrt-v4 does the same), so one
+    // number makes the whole descent.
+    bool pick(const glm::vec3& p, const glm::vec3& n, float u, Pick& out) const;
+    // The probability pick() picks `emitter` for (p, n) with.
+    float probability(const glm::vec3& p, const glm::vec3& n, uint32_t emitter) const;
 
     // Checks of a built tree, for the tests: each node's bounds hold its children's, its power is
     // their sum, its cone holds theirs; and every emitter is reached by exactly one leaf.
@@ -57,12 +58,11 @@ private:
         uint32_t length = 0;
     };
 
-    // The probability of taking node i's first child, seen from p; negative when neither child
-    // can face p. Shared by pick() and probability(), which is what keeps them equal.
-    float first_child_probability(uint32_t i, const glm::vec3& p) const {
-        const Node& n = nodes_[i];
-        const float first = nodes_[i + 1].bounds.importance(p);
-        const float second = nodes_[n.second_child_or_emitter].bounds.importance(p);
+    // The probability of taking node i's first child, seen from (p, n); negative when neither
+    // child can light it. Shared by pick() and probability(), which is what keeps them equal.
+    float first_child_probability(uint32_t i, const glm::vec3& p, const glm::vec3& n) const {
+        const float first = nodes_[i + 1].bounds.importance(p, n);
+        const float second = nodes_[nodes_[i].second_child_or_emitter].bounds.importance(p, n);
         const float sum = first + second;
         if (!(sum > 0.0f)) return -1.0f;
         const float p_first = first / sum;

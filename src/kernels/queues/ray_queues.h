@@ -50,12 +50,19 @@ struct RayQueue {
     // "lights" list (shade_queue.h), where camera rays count what they escape to anyway.
     static constexpr uint8_t kCountEmission = 1, kSpecularLightElsewhere = 2, kRoughPdf = 4, kCountEnvironment = 8;
     AlignedVector<float> bsdf_pdf;         // mis, or kRoughPdf: PathContinuation::bsdf_pdf
+    // A scene with an emitter selection (Scene::emitter_selection) only, else empty: the
+    // geometric normal of the vertex that cast the ray, which the light tree weighs the emitter
+    // the ray hits for (emission_added), as that vertex's light samples were picked.
+    AlignedVector<float> nx, ny, nz;
     std::size_t count = 0;
 
-    void reserve(std::size_t n) {
+    void reserve(std::size_t n, bool with_normals = false) {
         for (auto* a : {&ox, &oy, &oz, &dx, &dy, &dz, &throughput_r, &throughput_g, &throughput_b, &bsdf_pdf}) a->resize(n);
         path.resize(n), count_emission.resize(n);
+        for (auto* a : {&nx, &ny, &nz}) a->resize(with_normals ? n : 0);
     }
+    void set_normal(std::size_t i, const glm::vec3& n) { nx[i] = n.x, ny[i] = n.y, nz[i] = n.z; }
+    glm::vec3 normal(std::size_t i) const { return {nx[i], ny[i], nz[i]}; }
     void push(const Ray& r, const glm::vec3& throughput, uint32_t slot, uint8_t emission) {
         const std::size_t i = count++;
         ox[i] = r.origin.x, oy[i] = r.origin.y, oz[i] = r.origin.z;
@@ -124,17 +131,20 @@ struct WavefrontWorkspace {
     ShadowQueue shadows;
 
     // What the constructor allocates, per path: the path table (2 x 4 + 8 + 4 x 4 bytes, and the
-    // first surface with AOVs), two ray queues (10 x 4 + 4 + 1), the hits (3 x 4 + 4); per shadow
-    // ray (10 x 4 + 4 + 1).
-    static constexpr std::size_t bytes_needed(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs) {
+    // first surface with AOVs), two ray queues (10 x 4 + 4 + 1, and 3 x 4 with the normals), the
+    // hits (3 x 4 + 4); per shadow ray (10 x 4 + 4 + 1).
+    static constexpr std::size_t bytes_needed(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs,
+                                              bool with_normals = false) {
         const std::size_t path_table = 32 + (with_aovs ? sizeof(FirstSurface) : 0);
-        return batch_paths * (path_table + 2 * 45 + 16) + batch_paths * shadow_rays_per_hit * 45;
+        const std::size_t ray_queue = 45 + (with_normals ? 12 : 0);
+        return batch_paths * (path_table + 2 * ray_queue + 16) + batch_paths * shadow_rays_per_hit * 45;
     }
 
-    WavefrontWorkspace(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs) {
+    // `with_normals`: the scene has an emitter selection (RayQueue::nx).
+    WavefrontWorkspace(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs, bool with_normals = false) {
         paths.resize(batch_paths, with_aovs);
-        rays.reserve(batch_paths);
-        next_rays.reserve(batch_paths);
+        rays.reserve(batch_paths, with_normals);
+        next_rays.reserve(batch_paths, with_normals);
         hits.reserve(batch_paths);
         shadows.reserve(batch_paths * shadow_rays_per_hit);
     }

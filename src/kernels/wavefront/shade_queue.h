@@ -66,7 +66,10 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
                                                                               E::mis || (kRough && (flags & RayQueue::kRoughPdf))
                                                                                   ? rays.bsdf_pdf[i]
                                                                                   : 0.0f,
-                                                                              bounce, hit.prim));
+                                                                              bounce, hit.prim,
+                                                                              kListedLights && !scene.emitter_selection.empty()
+                                                                                  ? rays.normal(i)
+                                                                                  : glm::vec3(0.0f)));
         const bool elsewhere = flags & RayQueue::kSpecularLightElsewhere;
         if (photons && gathers_photons(scene, m, bounce, elsewhere))
             paths.add_radiance(slot, throughput * gather_photons(photons->map(path.sample), m, surface, ray.direction,
@@ -86,8 +89,10 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         const auto next = continue_path<E, kRough>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere);
         if (next) {
             next_rays.push<E::mis>(*next, slot);
-            if constexpr (kListedLights)
+            if constexpr (kListedLights) {
                 if (next->count_environment) next_rays.count_emission[next_rays.count - 1] |= RayQueue::kCountEnvironment;
+                if (!scene.emitter_selection.empty()) next_rays.set_normal(next_rays.count - 1, surface.normal);
+            }
         }
     }
 }
