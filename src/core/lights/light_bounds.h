@@ -4,6 +4,7 @@
 // Adaptive Tree Splitting", sec. 4; pbrt-v4's LightBounds): a box that holds them, their total
 // power, and a cone of normals (axis, half-angle theta_o). Every emitter here is a one-sided
 // triangle, so its emission half-angle theta_e is pi/2 about each normal and is not stored.
+// LightBounds is what the tree is built from; CompactLightBounds what its descent reads.
 
 #include <algorithm>
 #include <cmath>
@@ -24,46 +25,63 @@ struct LightBounds {
         const glm::vec3 d = hi - lo;
         return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x);
     }
+};
+
+// What the light tree's descent reads of a node (pbrt-v4's CompactLightBounds, unquantised):
+// the box as its bounding sphere, and the cone's sine beside its cosine, so that one importance
+// costs one division and four square roots.
+struct CompactLightBounds {
+    glm::vec3 centre{0.0f};
+    float radius = 0.0f;
+    glm::vec3 axis{0.0f, 0.0f, 1.0f};
+    float radius2 = 0.0f;  // radius * radius
+    float cos_theta_o = 1.0f, sin_theta_o = 0.0f;
+    float power = 0.0f;
+
+    CompactLightBounds() = default;
+    explicit CompactLightBounds(const LightBounds& b)
+        : centre(b.centre()),
+          radius(0.5f * glm::length(b.hi - b.lo)),
+          axis(b.axis),
+          radius2(radius * radius),
+          cos_theta_o(b.cos_theta_o),
+          sin_theta_o(std::sqrt(std::max(0.0f, 1.0f - b.cos_theta_o * b.cos_theta_o))),
+          power(b.power) {}
 
     // An upper bound, up to the distance clamp, on what the emitters can send to a surface at `p`
     // of normal `n`: power times the largest cosine at which any normal in the cone can face any
     // point of the box seen from p, times the largest |cosine| between n and a direction from p
     // into the box (both sides: a rough glass vertex receives from behind too), over the squared
     // distance to the box's centre (the paper's eq. 3; pbrt-v4's LightBounds::Importance). Zero
-    // only when no emitter in the box can face p, or the whole box lies in p's tangent plane, so
-    // no emitter that could light p is ever given probability zero.
+    // only when no emitter in the box can face p, so no emitter that could light p is ever given
+    // probability zero.
     float importance(const glm::vec3& p, const glm::vec3& n) const {
-        const glm::vec3 c = centre();
-        const glm::vec3 to_p = p - c;
+        const glm::vec3 to_p = p - centre;
         const float d2 = glm::dot(to_p, to_p);
-        const glm::vec3 half_diagonal = 0.5f * (hi - lo);
-        const float r2 = glm::dot(half_diagonal, half_diagonal);
-        // Inside the box's bounding sphere every direction may face p: the cosine bound is 1, and
-        // the distance no less than the sphere's radius (pbrt-v4 clamps likewise) so a light near
-        // p does not take every sample.
-        if (d2 <= r2) return power / std::max(r2, 1e-30f);
-        const float d = std::sqrt(d2);
+        // Inside the box's bounding sphere every direction may face p: the cosine bounds are 1,
+        // and the distance no less than the sphere's radius (pbrt-v4 clamps likewise) so a light
+        // near p does not take every sample.
+        if (d2 <= radius2) return power / std::max(radius2, 1e-30f);
+        const float inverse_d = 1.0f / std::sqrt(d2);
         // theta_w: the angle between the cone's axis and the direction from the centre to p;
-        // theta_b: the half-angle the box's bounding sphere subtends at p.
-        const float cos_w = glm::dot(axis, to_p) / d;
-        const float sin_w = std::sqrt(std::max(0.0f, 1.0f - cos_w * cos_w));
-        const float sin_b2 = r2 / d2;
-        const float cos_b = std::sqrt(std::max(0.0f, 1.0f - sin_b2));
-        const float sin_b = std::sqrt(sin_b2);
-        const float sin_o = std::sqrt(std::max(0.0f, 1.0f - cos_theta_o * cos_theta_o));
-        // theta' = max(0, theta_w - theta_o - theta_b), as cosines: cos(a - b) clamped at a <= b.
+        // theta_b: the half-angle the bounding sphere subtends at p.
+        const float cos_w = glm::dot(axis, to_p) * inverse_d;
+        const float sin_b = radius * inverse_d;
+        const float cos_b = std::sqrt(std::max(0.0f, 1.0f - sin_b * sin_b));
+        // theta' = max(0, theta_w - theta_o - theta_b), as cosines: cos(a - b), 1 where a <= b.
         float cos_x = 1.0f, sin_x = 0.0f;
         if (cos_w < cos_theta_o) {
-            cos_x = cos_w * cos_theta_o + sin_w * sin_o;
-            sin_x = sin_w * cos_theta_o - cos_w * sin_o;
+            const float sin_w = std::sqrt(std::max(0.0f, 1.0f - cos_w * cos_w));
+            cos_x = cos_w * cos_theta_o + sin_w * sin_theta_o;
+            sin_x = sin_w * cos_theta_o - cos_w * sin_theta_o;
         }
         const float cos_p = cos_x < cos_b ? cos_x * cos_b + sin_x * sin_b : 1.0f;
         if (!(cos_p > 0.0f)) return 0.0f;  // theta' >= theta_e = pi/2: every emitter faces away
         // The receiver: theta_i between n and the direction to the centre, less theta_b.
-        const float cos_i = std::fabs(glm::dot(n, to_p)) / d;
-        const float sin_i = std::sqrt(std::max(0.0f, 1.0f - cos_i * cos_i));
-        const float cos_ip = cos_i < cos_b ? cos_i * cos_b + sin_i * sin_b : 1.0f;
-        return power * cos_p * cos_ip / d2;
+        const float cos_i = std::fabs(glm::dot(n, to_p)) * inverse_d;
+        float cos_ip = 1.0f;
+        if (cos_i < cos_b) cos_ip = cos_i * cos_b + std::sqrt(std::max(0.0f, 1.0f - cos_i * cos_i)) * sin_b;
+        return power * cos_p * cos_ip * (inverse_d * inverse_d);
     }
 };
 

@@ -6,8 +6,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include <glm/vector_relational.hpp>
-
 namespace wt {
 
 namespace {
@@ -50,17 +48,20 @@ LightTree::LightTree(const std::vector<LightBounds>& emitters) {
     for (std::size_t k = 0; k < emitters.size(); ++k) items[k] = {emitters[k], emitters[k].centre(), uint32_t(k)};
     trails_.resize(emitters.size());
     nodes_.reserve(2 * emitters.size() - 1);
-    build(items, 0, items.size(), 0, 0);
+    LightBounds root;
+    build(items, 0, items.size(), 0, 0, root);
 }
 
-uint32_t LightTree::build(std::vector<Item>& items, std::size_t begin, std::size_t end, uint32_t depth, uint64_t turns) {
+uint32_t LightTree::build(std::vector<Item>& items, std::size_t begin, std::size_t end, uint32_t depth, uint64_t turns,
+                          LightBounds& bounds) {
     const uint32_t index = uint32_t(nodes_.size());
     nodes_.emplace_back();
     depth_ = std::max(depth_, int(depth));
     if (end - begin == 1) {
         const Item& item = items[begin];
-        nodes_[index] = {item.bounds, item.emitter, true};
+        nodes_[index] = {CompactLightBounds(item.bounds), item.emitter, true};
         trails_[item.emitter] = {turns, depth};
+        bounds = item.bounds;
         return index;
     }
     glm::vec3 lo(INFINITY), hi(-INFINITY);
@@ -124,9 +125,11 @@ uint32_t LightTree::build(std::vector<Item>& items, std::size_t begin, std::size
                          });
     }
     if (depth >= 63) throw std::length_error("LightTree: a path deeper than its trail");
-    build(items, begin, middle, depth + 1, turns);
-    const uint32_t second = build(items, middle, end, depth + 1, turns | (uint64_t(1) << depth));
-    nodes_[index].bounds = unite(nodes_[index + 1].bounds, nodes_[second].bounds);
+    LightBounds first_bounds, second_bounds;
+    build(items, begin, middle, depth + 1, turns, first_bounds);
+    const uint32_t second = build(items, middle, end, depth + 1, turns | (uint64_t(1) << depth), second_bounds);
+    bounds = unite(first_bounds, second_bounds);
+    nodes_[index].bounds = CompactLightBounds(bounds);
     nodes_[index].second_child_or_emitter = second;
     return index;
 }
@@ -180,8 +183,7 @@ bool LightTree::is_consistent() const {
             continue;
         }
         for (const Node* c : {&nodes_[i + 1], &nodes_[n.second_child_or_emitter]}) {
-            const LightBounds& b = c->bounds;
-            if (glm::any(glm::lessThan(b.lo, n.bounds.lo)) || glm::any(glm::greaterThan(b.hi, n.bounds.hi))) return false;
+            const CompactLightBounds& b = c->bounds;
             // The child's cone inside the parent's: the angle between axes plus the child's
             // half-angle within the parent's, up to rounding.
             // (2 asin(|a - b| / 2), not acos(a . b): that is exact for nearly equal axes.)

@@ -41,13 +41,13 @@ public:
     // The probability pick() picks `emitter` for (p, n) with.
     float probability(const glm::vec3& p, const glm::vec3& n, uint32_t emitter) const;
 
-    // Checks of a built tree, for the tests: each node's bounds hold its children's, its power is
-    // their sum, its cone holds theirs; and every emitter is reached by exactly one leaf.
+    // Checks of a built tree, for the tests: each node's power is its children's sum, its cone
+    // holds theirs; and every emitter is reached by exactly one leaf.
     bool is_consistent() const;
 
 private:
     struct Node {
-        LightBounds bounds;
+        CompactLightBounds bounds;
         // An inner node's first child is the next node; this is its second. A leaf: its emitter.
         uint32_t second_child_or_emitter = 0;
         bool leaf = false;
@@ -70,7 +70,9 @@ private:
     }
 
     struct Item;  // an emitter while building
-    uint32_t build(std::vector<Item>& items, std::size_t begin, std::size_t end, uint32_t depth, uint64_t turns);
+    // Builds the subtree of items [begin, end), returns its root's index and sets `bounds` to its bounds.
+    uint32_t build(std::vector<Item>& items, std::size_t begin, std::size_t end, uint32_t depth, uint64_t turns,
+                   LightBounds& bounds);
 
     std::vector<Node> nodes_;   // depth first: the root at 0
     std::vector<Trail> trails_;  // per emitter
