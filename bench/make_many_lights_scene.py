@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Writes the many-lights scene (issue 17): a room lit by 11,200 small emissive triangles.
 
-    bench/make_many_lights_scene.py OUT.json [--side N]
+    bench/make_many_lights_scene.py OUT.json [--side N] [--length L]
 
-A 10 x 10 x 4 room: the ceiling holds a grid of N x N triangles facing down (N = 80 by default)
-and each wall a band of triangles facing in; their emission spans three decades, a few bright
+A L x 10 x 4 room (L = 10 by default; a long hall with L = 40): the ceiling holds a grid of
+N x N triangles facing down (N = 80 by default, stretched along x) and each wall a band of
+triangles facing in; their emission spans three decades, a few bright
 and most dim (eight materials, assigned by a fixed pseudo-random draw, so the file is the same
 on every run). Under them a diffuse floor, a rough metal sphere and block, and a diffuse
 sphere. Selection by area spends most light samples on the dim emitters and on the far ones;
@@ -32,6 +33,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out")
     parser.add_argument("--side", type=int, default=80, help="ceiling triangles per side (the walls get side x 15 / 20 each)")
+    parser.add_argument("--length", type=float, default=10.0, help="the room's extent along x (its width along y is 10)")
     args = parser.parse_args()
     rng = random.Random(17)
     meshes = [{"vertices": [], "triangles": []} for _ in EMISSIONS]
@@ -43,22 +45,25 @@ def main():
         m["triangles"].append([base, base + 1, base + 2])
 
     n = args.side
-    cell = 9.0 / n
-    size = 0.4 * cell
+    hx = 0.5 * args.length  # the room spans [-hx, hx] along x, [-5, 5] along y
+    cell_x, cell = (args.length - 1.0) / n, 9.0 / n
     for j in range(n):  # the ceiling, facing down: cross(b - a, c - a) points to -z
         for i in range(n):
-            x, y = -4.5 + (i + 0.5) * cell, -4.5 + (j + 0.5) * cell
-            triangle(pick_emission(rng), [x, y, 3.95], [x, y + size, 3.95], [x + size, y, 3.95])
+            x, y = -(hx - 0.5) + (i + 0.5) * cell_x, -4.5 + (j + 0.5) * cell
+            triangle(pick_emission(rng), [x, y, 3.95], [x, y + 0.4 * cell, 3.95], [x + 0.4 * cell_x, y, 3.95])
     columns, rows = n * 3 // 4, n // 4
     for wall in range(4):  # a band on each wall, 1.5 to 3.5 high, facing into the room
         for j in range(rows):
             for i in range(columns):
-                s, z = -4.5 + (i + 0.5) * 9.0 / columns, 1.5 + (j + 0.5) * 2.0 / rows
-                h = 0.4 * 9.0 / columns
+                z, h = 1.5 + (j + 0.5) * 2.0 / rows, 0.4 * 9.0 / columns
+                if wall < 2:  # the walls across x: their bands run along y
+                    s = -4.5 + (i + 0.5) * 9.0 / columns
+                else:  # along x
+                    s, h = -(hx - 0.5) + (i + 0.5) * (args.length - 1.0) / columns, 0.4 * (args.length - 1.0) / columns
                 if wall == 0:
-                    a, b, c = [-4.95, s, z], [-4.95, s + h, z], [-4.95, s, z + h]
+                    a, b, c = [-(hx - 0.05), s, z], [-(hx - 0.05), s + h, z], [-(hx - 0.05), s, z + h]
                 elif wall == 1:
-                    a, b, c = [4.95, s, z], [4.95, s, z + h], [4.95, s + h, z]
+                    a, b, c = [hx - 0.05, s, z], [hx - 0.05, s, z + h], [hx - 0.05, s + h, z]
                 elif wall == 2:
                     a, b, c = [s, -4.95, z], [s, -4.95, z + h], [s + h, -4.95, z]
                 else:
@@ -78,12 +83,12 @@ def main():
         return {"type": "quad", "material": material, "vertices": list(v)}
 
     shapes = [
-        quad("floor", [-5, -5, 0], [5, -5, 0], [5, 5, 0], [-5, 5, 0]),
-        quad("wall", [-5, -5, 4], [-5, 5, 4], [5, 5, 4], [5, -5, 4]),
-        quad("wall", [-5, -5, 0], [-5, 5, 0], [-5, 5, 4], [-5, -5, 4]),
-        quad("wall", [5, -5, 0], [5, -5, 4], [5, 5, 4], [5, 5, 0]),
-        quad("wall", [-5, -5, 0], [-5, -5, 4], [5, -5, 4], [5, -5, 0]),
-        quad("wall", [-5, 5, 0], [5, 5, 0], [5, 5, 4], [-5, 5, 4]),
+        quad("floor", [-hx, -5, 0], [hx, -5, 0], [hx, 5, 0], [-hx, 5, 0]),
+        quad("wall", [-hx, -5, 4], [-hx, 5, 4], [hx, 5, 4], [hx, -5, 4]),
+        quad("wall", [-hx, -5, 0], [-hx, 5, 0], [-hx, 5, 4], [-hx, -5, 4]),
+        quad("wall", [hx, -5, 0], [hx, -5, 4], [hx, 5, 4], [hx, 5, 0]),
+        quad("wall", [-hx, -5, 0], [-hx, -5, 4], [hx, -5, 4], [hx, -5, 0]),
+        quad("wall", [-hx, 5, 0], [hx, 5, 0], [hx, 5, 4], [-hx, 5, 4]),
         quad("metal", [0.5, 0.5, 1.2], [2.5, 0.5, 1.2], [2.5, 2.5, 1.2], [0.5, 2.5, 1.2]),
         quad("metal", [0.5, 0.5, 0], [2.5, 0.5, 0], [2.5, 0.5, 1.2], [0.5, 0.5, 1.2]),
         quad("metal", [0.5, 0.5, 0], [0.5, 0.5, 1.2], [0.5, 2.5, 1.2], [0.5, 2.5, 0]),

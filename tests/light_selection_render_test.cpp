@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/scene/scene.h"
+#include "core/scene_file/scene_loader.h"
 #include "many_lights_scene.h"
 #include "render_helpers.h"
 #include "white_furnace_check.h"
@@ -120,6 +121,22 @@ TEST(ManyLights, SameBitsForAnySchedule) {
             EXPECT_EQ(r.result.counts.nonfinite_samples, 0u);
             test::expect_same_film_for_any_schedule(d, r.film);
         }
+}
+
+// The repository's scenes, each with few lights, render the same bits with the default as with
+// selection by area, and build no selection.
+TEST(ManyLights, TodaysScenesKeepTheirBitsWithTheDefault) {
+    for (const char* name : {"hexroom.json", "furnace.json", "caustic_mirror.json"}) {
+        SCOPED_TRACE(name);
+        SceneDescription d = load_scene_file(std::string(WT_SCENES_DIR) + "/" + name);
+        ASSERT_EQ(d.settings.estimator.light_selection, LightSelection::automatic);
+        d.settings.width = d.settings.height = 12;
+        d.settings.spp = 2;
+        EXPECT_TRUE(build_scene(d).emitter_selection.empty());
+        const Film automatic = test::render_film(d, Integrator::wavefront).film;
+        d.settings.estimator.light_selection = LightSelection::area;
+        EXPECT_TRUE(automatic == test::render_film(d, Integrator::wavefront).film);
+    }
 }
 
 // With one emitter every selection is the area's: same scene, same bits.

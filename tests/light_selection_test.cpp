@@ -206,6 +206,23 @@ TEST(EmitterSelection, PowerSharesAndSamplePdfsMatchTheQuery) {
     }
 }
 
+// The default: power where a scene has 16 emitters or more of different radiance; area (nothing
+// built, today's loop and bits) with fewer, or when they all emit alike (power is area then).
+TEST(EmitterSelection, AutomaticIsPowerForManyEmittersOfDifferentRadianceElseArea) {
+    const auto chosen = [](const SceneDescription& d) {
+        const Scene scene = build_scene(d);
+        return scene.emitter_selection.empty() ? LightSelection::area : scene.emitter_selection.how();
+    };
+    EXPECT_EQ(chosen(test::many_lights_room(4, LightSampling::nee, LightSelection::automatic)), LightSelection::power);
+    EXPECT_EQ(chosen(test::many_lights_room(3, LightSampling::nee, LightSelection::automatic)), LightSelection::area);  // 9
+    SceneDescription alike = test::many_lights_room(8, LightSampling::nee, LightSelection::automatic);
+    for (Material& m : alike.materials)
+        if (m.is_emissive()) m.emission = glm::vec3(3.0f);
+    EXPECT_EQ(chosen(alike), LightSelection::area);
+    EXPECT_EQ(chosen(test::many_lights_room(8, LightSampling::nee, LightSelection::area)), LightSelection::area);
+    EXPECT_EQ(chosen(test::many_lights_room(8, LightSampling::nee, LightSelection::bvh)), LightSelection::bvh);
+}
+
 // Only what a scene requires: with "area", or with one emitter, nothing is built and the
 // integrators keep the area lights' loop.
 TEST(EmitterSelection, NothingIsBuiltForAreaOrForOneEmitter) {
@@ -224,7 +241,7 @@ TEST(EmitterSelection, NothingIsBuiltForAreaOrForOneEmitter) {
 }
 
 // render.light_selection: read from the scene file, refused when unknown, and an image setting a
-// checkpoint stores only when it is not "area" (every checkpoint before it was by area).
+// checkpoint stores only when it is not "auto", the default.
 TEST(EmitterSelection, SceneFileKeyAndCheckpointSetting) {
     const auto scene_text = [](const std::string& render_extra) {
         return R"({"camera": {"eye": [0, 0, 1], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov_degrees": 60},
@@ -233,14 +250,14 @@ TEST(EmitterSelection, SceneFileKeyAndCheckpointSetting) {
                    "shapes": [{"type": "quad", "material": "lamp", "vertices": [[0, 0, 2], [0, 1, 2], [1, 1, 2], [1, 0, 2]]}]})";
     };
     const SceneDescription plain = parse_scene_json(scene_text(""), "test.json");
-    EXPECT_EQ(plain.settings.estimator.light_selection, LightSelection::area);
+    EXPECT_EQ(plain.settings.estimator.light_selection, LightSelection::automatic);
     const auto stored = [](const RenderSettings& s) {
         for (const NamedSetting& n : image_settings(s))
             if (n.name == "light_selection") return n.value;
         return std::string();
     };
     EXPECT_EQ(stored(plain.settings), "");
-    for (const char* name : {"power", "bvh"}) {
+    for (const char* name : {"area", "power", "bvh"}) {
         const SceneDescription d = parse_scene_json(scene_text(std::string(R"(, "light_selection": ")") + name + "\""), "test.json");
         EXPECT_STREQ(name_of(d.settings.estimator.light_selection), name);
         EXPECT_EQ(stored(d.settings), name);

@@ -67,8 +67,9 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::IsMember({"nee", "mis"}));
     cmd->add_option("--light-selection", o.light_selection,
                     "which emissive triangle a light sample goes to: area (in proportion to area), power (to "
-                    "area x luminance) or bvh (a light tree: power, distance and orientation from the shading point)")
-        ->check(CLI::IsMember({"area", "power", "bvh"}));
+                    "area x luminance), bvh (a light tree: power, distance and orientation from the shading point) or "
+                    "auto (the default: power where a scene has 16 emitters or more whose radiance differs, else area)")
+        ->check(CLI::IsMember({"auto", "area", "power", "bvh"}));
     cmd->add_option("--caustics", o.caustics,
                     "Caustics (diffuse, mirror or glass, light): path (the camera path finds them by chance), "
                     "light_tracing (light paths through the mirrors and glass, connected to the camera, for caustics "

@@ -42,8 +42,9 @@ std::vector<NamedSetting> image_settings(const RenderSettings& s) {
     // Multiple scattering only when on, which no render before it was.
     if (s.accuracy.multiple_scattering != MultipleScattering::none)
         settings.push_back({"multiple_scattering", name_of(s.accuracy.multiple_scattering)});
-    // The light selection only when not by area, which every render before the choice was.
-    if (s.estimator.light_selection != LightSelection::area)
+    // The light selection only when not automatic, the default (which is area, as every render
+    // before the choice was, unless the scene has many emitters of different radiance).
+    if (s.estimator.light_selection != LightSelection::automatic)
         settings.push_back({"light_selection", name_of(s.estimator.light_selection)});
     // Likewise the photons' radius, which only the photons read.
     if (s.estimator.caustics == CausticPaths::photons)

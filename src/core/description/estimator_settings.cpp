@@ -37,12 +37,13 @@ const char* name_of(LightSelection l) {
     switch (l) {
         case LightSelection::power: return "power";
         case LightSelection::bvh: return "bvh";
-        case LightSelection::area: break;
+        case LightSelection::area: return "area";
+        case LightSelection::automatic: break;
     }
-    return "area";
+    return "auto";
 }
 std::optional<LightSelection> parse_light_selection(const std::string& s) {
-    return parse_one_of(s, {LightSelection::area, LightSelection::power, LightSelection::bvh});
+    return parse_one_of(s, {LightSelection::automatic, LightSelection::area, LightSelection::power, LightSelection::bvh});
 }
 
 }  // namespace wt

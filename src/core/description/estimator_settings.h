@@ -24,6 +24,9 @@ enum class LightSampling : uint8_t {
 // How a light sample picks one of the emissive triangles (core/lights/emitter_selection.h).
 // Light paths (light tracing, photons) start by area whichever is chosen.
 enum class LightSelection : uint8_t {
+    // power where the scene has many emitters whose radiance differs, else area (so a scene with
+    // few lights keeps its image bits): chosen_light_selection(), measured in bench/README.md
+    automatic,
     area,   // in proportion to area: pdf 1 / total area on every light, whatever it emits
     power,  // in proportion to power (area times luminance of the emission)
     bvh,    // by a light tree, in proportion to each node's importance to the shading point
@@ -47,7 +50,7 @@ constexpr float kPhotonRadiusMax = 1e18f;
 struct EstimatorSettings {
     SamplerKind sampler = SamplerKind::stratified;
     LightSampling light_sampling = LightSampling::nee;
-    LightSelection light_selection = LightSelection::area;
+    LightSelection light_selection = LightSelection::automatic;
     // Per-channel upper bound on each indirect contribution (see clamp_indirect() in
     // core/path/estimator.h for exactly which); 0 means off.
     float clamp_indirect = 0.0f;

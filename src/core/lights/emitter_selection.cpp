@@ -28,10 +28,20 @@ LightBounds emitter_bounds(const TriangleSoA& triangles, uint32_t i, double powe
 
 }  // namespace
 
+LightSelection chosen_light_selection(LightSelection setting, const LightTable& table, const TriangleSoA& triangles,
+                                      const std::vector<Material>& materials) {
+    if (setting != LightSelection::automatic) return setting;
+    if (table.size() < kManyEmitters) return LightSelection::area;
+    const double first = luminance(materials[triangles.material[table.triangle_of(0)]].emission);
+    for (std::size_t k = 1; k < table.size(); ++k)
+        if (luminance(materials[triangles.material[table.triangle_of(k)]].emission) != first) return LightSelection::power;
+    return LightSelection::area;
+}
+
 EmitterSelection::EmitterSelection(LightSelection how, const LightTable& table, const TriangleSoA& triangles,
                                    const std::vector<Material>& materials)
     : how_(how) {
-    if (how == LightSelection::area || table.empty()) return;
+    if (how == LightSelection::area || how == LightSelection::automatic || table.empty()) return;
     std::vector<double> power(table.size());
     inverse_area_.resize(table.size());
     emitter_of_triangle_.assign(triangles.size(), kNoEmitter);

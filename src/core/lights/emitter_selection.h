@@ -28,10 +28,21 @@
 
 namespace wt {
 
+// What `setting` means for this scene: LightSelection::automatic becomes power where the scene
+// has kManyEmitters or more emitters and their radiance (luminance) differs, else area, which
+// power equals when every emitter emits alike; the others stay as they are. Power rather than
+// the tree: it draws as cheaply as area, while the tree's descent costs a few dozen importance
+// evaluations per light sample and, blind to the BSDF, can starve a glossy lobe's far lights
+// (bench/README.md, "Many lights", measures the three).
+constexpr std::size_t kManyEmitters = 16;  // fewer: a scene with few lights keeps today's bits
+LightSelection chosen_light_selection(LightSelection setting, const LightTable& table, const TriangleSoA& triangles,
+                                      const std::vector<Material>& materials);
+
 class EmitterSelection {
 public:
     EmitterSelection() = default;
-    // `how`: power or bvh (area builds nothing). `table`: the scene's emitters, in its order.
+    // `how`: power or bvh (area builds nothing; chosen_light_selection() first resolves automatic).
+    // `table`: the scene's emitters, in its order.
     EmitterSelection(LightSelection how, const LightTable& table, const TriangleSoA& triangles, const std::vector<Material>& materials);
 
     bool empty() const { return inverse_area_.empty(); }

@@ -170,7 +170,8 @@ Scene build_scene(const SceneDescription& description) {
     }
     scene.lights = LightTable(scene.triangles, scene.materials);
     // Another selection than by area only where there is a choice: with one emitter they all agree.
-    const LightSelection selection = description.settings.estimator.light_selection;
+    const LightSelection selection =
+        chosen_light_selection(description.settings.estimator.light_selection, scene.lights, scene.triangles, scene.materials);
     if (selection != LightSelection::area && scene.lights.size() > 1)
         scene.emitter_selection = EmitterSelection(selection, scene.lights, scene.triangles, scene.materials);
     if (!description.lights.empty() || !scene.emitter_selection.empty()) {

@@ -148,7 +148,7 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     read_choice("multiple_scattering", s.accuracy.multiple_scattering, parse_multiple_scattering, "\"none\", \"kulla_conty\"");
     read_choice("sampler", s.estimator.sampler, parse_sampler, "\"independent\", \"stratified\", \"sobol\"");
     read_choice("light_sampling", s.estimator.light_sampling, parse_light_sampling, "\"nee\", \"mis\"");
-    read_choice("light_selection", s.estimator.light_selection, parse_light_selection, "\"area\", \"power\", \"bvh\"");
+    read_choice("light_selection", s.estimator.light_selection, parse_light_selection, "\"auto\", \"area\", \"power\", \"bvh\"");
     read_choice("caustics", s.estimator.caustics, parse_caustic_paths,
                 "\"path\", \"light_tracing\", \"photons\"");
     read_choice("filter", s.filter.kind, parse_filter_kind, "\"box\", \"gaussian\", \"blackman_harris\", \"mitchell\"");
