@@ -2,8 +2,9 @@
 // Light samples and escaped rays in a scene with a "lights" list (Scene::listed_lights): the
 // counterparts of DirectLightSampler, GlossyLightSampler and emission_added (path_vertex.h,
 // glossy_light_sampler.h) when a light sample may go to the area lights, the environment or a
-// punctual light, picked by power (core/lights/scene_lights.h). A scene without the list never
-// runs this code: its vertices run today's samplers, on today's bits.
+// punctual light, picked by power (core/lights/scene_lights.h), and whose area light may be
+// picked by power or the light tree (Scene::emitter_selection). A scene with neither never runs
+// this code: its vertices run today's samplers, on today's bits.
 //
 // Which strategy counts what, so each estimator stays unbiased (as for the area lights):
 // - Point and spot lights and a directional light of angle 0 are deltas: only light samples
