@@ -126,7 +126,7 @@ TEST(ManyLights, SameBitsForAnySchedule) {
 // The repository's scenes, each with few lights, render the same bits with the default as with
 // selection by area, and build no selection.
 TEST(ManyLights, TodaysScenesKeepTheirBitsWithTheDefault) {
-    for (const char* name : {"hexroom.json", "furnace.json", "caustic_mirror.json"}) {
+    for (const char* name : {"hexroom.json", "furnace.json", "caustic_mirror.json", "envroom.json"}) {
         SCOPED_TRACE(name);
         SceneDescription d = load_scene_file(std::string(WT_SCENES_DIR) + "/" + name);
         ASSERT_EQ(d.settings.estimator.light_selection, LightSelection::automatic);

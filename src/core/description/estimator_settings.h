@@ -50,7 +50,6 @@ constexpr float kPhotonRadiusMax = 1e18f;
 struct EstimatorSettings {
     SamplerKind sampler = SamplerKind::stratified;
     LightSampling light_sampling = LightSampling::nee;
-    LightSelection light_selection = LightSelection::automatic;
     // Per-channel upper bound on each indirect contribution (see clamp_indirect() in
     // core/path/estimator.h for exactly which); 0 means off.
     float clamp_indirect = 0.0f;
@@ -67,6 +66,9 @@ struct EstimatorSettings {
     // shrink from it, kernels/photons/photon_radius.h); 0: automatic, from the camera's pixel
     // footprint at the scene's distance.
     float photon_radius = 0.0f;
+    // Last, so the positional initialisers written before it ({sampler, light_sampling, clamp})
+    // keep their meaning.
+    LightSelection light_selection = LightSelection::automatic;
 };
 
 const char* name_of(SamplerKind);
