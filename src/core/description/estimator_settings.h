@@ -59,6 +59,10 @@ struct EstimatorSettings {
     // through a mirror: photons" (the most efficient of the three on every scene measured, its
     // bias below its noise).
     CausticPaths caustics = CausticPaths::photons;
+    // After the fields a positional initialiser names ({sampler, light_sampling, clamp,
+    // caustics}), so they keep their meaning, and in caustics' padding, so the settings every
+    // stage copies keep their size.
+    LightSelection light_selection = LightSelection::automatic;
     // With light tracing, light paths per pixel of the image and per sample: the light-tracing
     // work per sample is this times width x height paths.
     float light_paths_per_pixel = 1.0f;
@@ -66,9 +70,6 @@ struct EstimatorSettings {
     // shrink from it, kernels/photons/photon_radius.h); 0: automatic, from the camera's pixel
     // footprint at the scene's distance.
     float photon_radius = 0.0f;
-    // Last, so the positional initialisers written before it ({sampler, light_sampling, clamp})
-    // keep their meaning.
-    LightSelection light_selection = LightSelection::automatic;
 };
 
 const char* name_of(SamplerKind);

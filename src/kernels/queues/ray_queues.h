@@ -23,12 +23,19 @@ struct PathTable {
     AlignedVector<float> filter_weight;  // CameraRay::weight: multiplies the radiance on the film
     // The albedo, normal and depth AOVs' data per path; empty (and never touched) without them.
     AlignedVector<FirstSurface> first_surface;
+    // A scene with an emitter selection (Scene::emitter_selection) only, else empty: the
+    // geometric normal of the vertex that cast the path's ray, which the light tree weighs the
+    // emitter the ray hits for (emission_added), as that vertex's light samples were picked.
+    AlignedVector<float> nx, ny, nz;
 
-    void resize(std::size_t n, bool with_aovs) {
+    void resize(std::size_t n, bool with_aovs, bool with_normals = false) {
         pixel.resize(n), sample.resize(n), key.resize(n);
         radiance_r.resize(n), radiance_g.resize(n), radiance_b.resize(n), filter_weight.resize(n);
         first_surface.resize(with_aovs ? n : 0);
+        for (auto* a : {&nx, &ny, &nz}) a->resize(with_normals ? n : 0);
     }
+    void set_normal(uint32_t slot, const glm::vec3& n) { nx[slot] = n.x, ny[slot] = n.y, nz[slot] = n.z; }
+    glm::vec3 normal(uint32_t slot) const { return {nx[slot], ny[slot], nz[slot]}; }
     void add_radiance(uint32_t slot, const glm::vec3& c) {
         radiance_r[slot] += c.x, radiance_g[slot] += c.y, radiance_b[slot] += c.z;
     }
@@ -50,19 +57,12 @@ struct RayQueue {
     // "lights" list (shade_queue.h), where camera rays count what they escape to anyway.
     static constexpr uint8_t kCountEmission = 1, kSpecularLightElsewhere = 2, kRoughPdf = 4, kCountEnvironment = 8;
     AlignedVector<float> bsdf_pdf;         // mis, or kRoughPdf: PathContinuation::bsdf_pdf
-    // A scene with an emitter selection (Scene::emitter_selection) only, else empty: the
-    // geometric normal of the vertex that cast the ray, which the light tree weighs the emitter
-    // the ray hits for (emission_added), as that vertex's light samples were picked.
-    AlignedVector<float> nx, ny, nz;
     std::size_t count = 0;
 
-    void reserve(std::size_t n, bool with_normals = false) {
+    void reserve(std::size_t n) {
         for (auto* a : {&ox, &oy, &oz, &dx, &dy, &dz, &throughput_r, &throughput_g, &throughput_b, &bsdf_pdf}) a->resize(n);
         path.resize(n), count_emission.resize(n);
-        for (auto* a : {&nx, &ny, &nz}) a->resize(with_normals ? n : 0);
     }
-    void set_normal(std::size_t i, const glm::vec3& n) { nx[i] = n.x, ny[i] = n.y, nz[i] = n.z; }
-    glm::vec3 normal(std::size_t i) const { return {nx[i], ny[i], nz[i]}; }
     void push(const Ray& r, const glm::vec3& throughput, uint32_t slot, uint8_t emission) {
         const std::size_t i = count++;
         ox[i] = r.origin.x, oy[i] = r.origin.y, oz[i] = r.origin.z;
@@ -130,21 +130,20 @@ struct WavefrontWorkspace {
     HitQueue hits;
     ShadowQueue shadows;
 
-    // What the constructor allocates, per path: the path table (2 x 4 + 8 + 4 x 4 bytes, and the
-    // first surface with AOVs), two ray queues (10 x 4 + 4 + 1, and 3 x 4 with the normals), the
+    // What the constructor allocates, per path: the path table (2 x 4 + 8 + 4 x 4 bytes, the
+    // first surface with AOVs, 3 x 4 with the normals), two ray queues (10 x 4 + 4 + 1), the
     // hits (3 x 4 + 4); per shadow ray (10 x 4 + 4 + 1).
     static constexpr std::size_t bytes_needed(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs,
                                               bool with_normals = false) {
-        const std::size_t path_table = 32 + (with_aovs ? sizeof(FirstSurface) : 0);
-        const std::size_t ray_queue = 45 + (with_normals ? 12 : 0);
-        return batch_paths * (path_table + 2 * ray_queue + 16) + batch_paths * shadow_rays_per_hit * 45;
+        const std::size_t path_table = 32 + (with_aovs ? sizeof(FirstSurface) : 0) + (with_normals ? 12 : 0);
+        return batch_paths * (path_table + 2 * 45 + 16) + batch_paths * shadow_rays_per_hit * 45;
     }
 
-    // `with_normals`: the scene has an emitter selection (RayQueue::nx).
+    // `with_normals`: the scene has an emitter selection (PathTable::nx).
     WavefrontWorkspace(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs, bool with_normals = false) {
-        paths.resize(batch_paths, with_aovs);
-        rays.reserve(batch_paths, with_normals);
-        next_rays.reserve(batch_paths, with_normals);
+        paths.resize(batch_paths, with_aovs, with_normals);
+        rays.reserve(batch_paths);
+        next_rays.reserve(batch_paths);
         hits.reserve(batch_paths);
         shadows.reserve(batch_paths * shadow_rays_per_hit);
     }

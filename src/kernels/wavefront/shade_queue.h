@@ -68,7 +68,7 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
                                                                                   : 0.0f,
                                                                               bounce, hit.prim,
                                                                               kListedLights && !scene.emitter_selection.empty()
-                                                                                  ? rays.normal(i)
+                                                                                  ? paths.normal(slot)
                                                                                   : glm::vec3(0.0f)));
         const bool elsewhere = flags & RayQueue::kSpecularLightElsewhere;
         if (photons && gathers_photons(scene, m, bounce, elsewhere))
@@ -91,7 +91,7 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
             next_rays.push<E::mis>(*next, slot);
             if constexpr (kListedLights) {
                 if (next->count_environment) next_rays.count_emission[next_rays.count - 1] |= RayQueue::kCountEnvironment;
-                if (!scene.emitter_selection.empty()) next_rays.set_normal(next_rays.count - 1, surface.normal);
+                if (!scene.emitter_selection.empty()) paths.set_normal(slot, surface.normal);
             }
         }
     }
