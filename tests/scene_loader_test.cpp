@@ -400,7 +400,7 @@ TEST(SceneErrors, UnknownCameraKey) {
 TEST(SceneErrors, UnknownRenderKey) {
     expect_scene_error(mutated([](Json& j) { j["render"]["samples"] = 4; }),
                        "render.samples: unknown key (allowed: width, height, spp, shadow_rays, seed, max_bounces, "
-                       "rr_start_bounce, triangle_test, sphere_test, fresnel, multiple_scattering, sampler, light_sampling, clamp_indirect, caustics, "
+                       "rr_start_bounce, triangle_test, sphere_test, fresnel, multiple_scattering, sampler, light_sampling, light_selection, clamp_indirect, caustics, "
                        "light_paths_per_pixel, photon_radius, adaptive_threshold, adaptive_min_spp, filter, filter_width)");
 }
 

@@ -81,7 +81,7 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
     if (options.integrator == Integrator::wavefront)
         e.queues_per_worker = double(WavefrontWorkspace::bytes_needed(
             workspace_paths(s.width, s.height, s.spp, options.tile_size, options.batch_paths), std::size_t(s.shadow_rays),
-            options.aovs.needs_path_data()));
+            options.aovs.needs_path_data(), !scene.emitter_selection.empty()));
     if (scene.light_traces_caustics) e.queues_per_worker += double(LightTracingPass::bytes_per_worker());
     const int lanes = intersect_kernels(options.isa.value_or(best_supported_isa()), s.accuracy).width;
     if (resolve_accel(options.accel, scene.primitive_count(), lanes, !scene.instances.empty()) == Accel::bvh)

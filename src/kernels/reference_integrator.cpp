@@ -35,6 +35,7 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
     float bsdf_pdf = 0.0f;       // mis: see emission_added
     bool specular_light_elsewhere = false;  // light tracing only: PathContinuation::specular_light_elsewhere
     [[maybe_unused]] bool count_environment = true;  // kListedLights: PathContinuation::count_environment
+    glm::vec3 previous_normal(0.0f);  // kListedLights: the geometric normal of the vertex that cast `ray`
 
     std::optional<Material> textured;  // the hit's material with its textures looked up (core/scene/material_at_hit.h)
     for (uint32_t bounce = 0;; ++bounce) {
@@ -53,7 +54,8 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
                                 throughput, glm::vec3(0.0f), 0, 0, glm::vec3(0.0f), 0.0f, 0, glm::vec3(0.0f)};
 
         if (count_emission) {
-            vertex.emission_added = emission_added<E>(scene, m, surface, ray, hit.t, throughput, bsdf_pdf, bounce);
+            vertex.emission_added = emission_added<E, true, kListedLights>(scene, m, surface, ray, hit.t, throughput, bsdf_pdf,
+                                                                           bounce, hit.prim, previous_normal);
             radiance += vertex.emission_added;
         }
         if (photons && gathers_photons(scene, m, bounce, specular_light_elsewhere)) {
@@ -94,6 +96,7 @@ glm::vec3 trace_path(const Scene& scene, uint32_t pixel, uint32_t sample, RayCou
         specular_light_elsewhere = next->specular_light_elsewhere;
         bsdf_pdf = next->bsdf_pdf;
         count_environment = next->count_environment;
+        if constexpr (kListedLights) previous_normal = surface.normal;
     }
     // The pixel filter's weight, as the wavefront film loop applies it (wavefront_renderer.cpp).
     return radiance * camera.weight;

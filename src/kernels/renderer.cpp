@@ -125,7 +125,7 @@ void RenderSession::render_tiles(Film& film, SampleRange range, const std::funct
                 const RenderSettings& s = scene_.settings;
                 const std::size_t capacity = workspace_paths(s.width, s.height, s.spp, options_.tile_size, options_.batch_paths);
                 ws = std::make_unique<WavefrontWorkspace>(capacity, std::size_t(scene_.settings.shadow_rays),
-                                                          options_.aovs.needs_path_data());
+                                                          options_.aovs.needs_path_data(), !scene_.emitter_selection.empty());
             }
             if (adaptive)
                 render_wavefront_pixels(scene_, context, tile, pixels, range.begin, range.end, options_.batch_paths,

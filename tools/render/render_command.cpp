@@ -65,6 +65,11 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
     cmd->add_option("--light-sampling", o.light_sampling, "nee (light samples only) or mis (light and BSDF samples, power heuristic)")
         ->check(CLI::IsMember({"nee", "mis"}));
+    cmd->add_option("--light-selection", o.light_selection,
+                    "which emissive triangle a light sample goes to: area (in proportion to area), power (to "
+                    "area x luminance), bvh (a light tree: power, distance and orientation from the shading point) or "
+                    "auto (the default: power where a scene has 16 emitters or more whose radiance differs, else area)")
+        ->check(CLI::IsMember({"auto", "area", "power", "bvh"}));
     cmd->add_option("--caustics", o.caustics,
                     "Caustics (diffuse, mirror or glass, light): path (the camera path finds them by chance), "
                     "light_tracing (light paths through the mirrors and glass, connected to the camera, for caustics "
@@ -155,6 +160,7 @@ void apply_overrides(const RenderCommandOptions& o, RenderSettings& s) {
     if (o.multiple_scattering) s.accuracy.multiple_scattering = *parse_multiple_scattering(*o.multiple_scattering);
     if (o.sampler) s.estimator.sampler = *parse_sampler(*o.sampler);
     if (o.light_sampling) s.estimator.light_sampling = *parse_light_sampling(*o.light_sampling);
+    if (o.light_selection) s.estimator.light_selection = *parse_light_selection(*o.light_selection);
     if (o.clamp_indirect) s.estimator.clamp_indirect = *o.clamp_indirect;
     if (o.caustics) s.estimator.caustics = *parse_caustic_paths(*o.caustics);
     if (o.light_paths_per_pixel) s.estimator.light_paths_per_pixel = float(*o.light_paths_per_pixel);

@@ -20,7 +20,7 @@ struct RenderCommandOptions {
     std::optional<int> spp, shadow_rays, width, height;
     std::optional<uint64_t> seed;
     std::optional<std::string> triangle_test, sphere_test, fresnel, multiple_scattering;
-    std::optional<std::string> sampler, light_sampling, caustics;
+    std::optional<std::string> sampler, light_sampling, light_selection, caustics;
     std::optional<float> clamp_indirect;
     std::optional<double> light_paths_per_pixel;
     std::optional<float> photon_radius;

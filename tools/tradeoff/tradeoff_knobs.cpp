@@ -19,6 +19,7 @@ void set_triangle_test(RenderSettings& s, const std::string& v) { s.accuracy.tri
 void set_sphere_test(RenderSettings& s, const std::string& v) { s.accuracy.spheres = *parse_sphere_test(v); }
 void set_sampler(RenderSettings& s, const std::string& v) { s.estimator.sampler = *parse_sampler(v); }
 void set_light_sampling(RenderSettings& s, const std::string& v) { s.estimator.light_sampling = *parse_light_sampling(v); }
+void set_light_selection(RenderSettings& s, const std::string& v) { s.estimator.light_selection = *parse_light_selection(v); }
 void set_caustics(RenderSettings& s, const std::string& v) { s.estimator.caustics = *parse_caustic_paths(v); }
 void set_light_paths(RenderSettings& s, const std::string& v) { s.estimator.light_paths_per_pixel = std::stof(v); }
 void set_clamp(RenderSettings& s, const std::string& v) { s.estimator.clamp_indirect = std::stof(v); }
@@ -34,6 +35,7 @@ std::string triangle_test(const RenderSettings& s) { return name_of(s.accuracy.t
 std::string sphere_test(const RenderSettings& s) { return name_of(s.accuracy.spheres); }
 std::string sampler(const RenderSettings& s) { return name_of(s.estimator.sampler); }
 std::string light_sampling(const RenderSettings& s) { return name_of(s.estimator.light_sampling); }
+std::string light_selection(const RenderSettings& s) { return name_of(s.estimator.light_selection); }
 std::string caustics(const RenderSettings& s) { return name_of(s.estimator.caustics); }
 std::string shortest(float v) {
     std::ostringstream out;  // 4 -> "4", 0.05f -> "0.05", as the table writes them
@@ -61,6 +63,8 @@ const std::vector<Knob>& tradeoff_knobs() {
         {"sphere_test", {"quadratic", "cancellation_free"}, true, set_sphere_test, sphere_test},
         {"sampler", {"independent", "stratified", "sobol"}, false, set_sampler, sampler},
         {"light_sampling", {"nee", "mis"}, false, set_light_sampling, light_sampling},
+        // All three unbiased: which emitter a light sample goes to changes the noise, not the mean.
+        {"light_selection", {"area", "power", "bvh"}, false, set_light_selection, light_selection},
         // 0 is off; the clamp trades bias (the mean drops where caustics are) for variance.
         {"clamp_indirect", {"0", "1", "4", "16"}, true, set_clamp, clamp},
         // path and light_tracing are unbiased; photons are consistent (the disk kernel blurs the

@@ -42,6 +42,10 @@ std::vector<NamedSetting> image_settings(const RenderSettings& s) {
     // Multiple scattering only when on, which no render before it was.
     if (s.accuracy.multiple_scattering != MultipleScattering::none)
         settings.push_back({"multiple_scattering", name_of(s.accuracy.multiple_scattering)});
+    // The light selection only when not automatic, the default (which is area, as every render
+    // before the choice was, unless the scene has many emitters of different radiance).
+    if (s.estimator.light_selection != LightSelection::automatic)
+        settings.push_back({"light_selection", name_of(s.estimator.light_selection)});
     // Likewise the photons' radius, which only the photons read.
     if (s.estimator.caustics == CausticPaths::photons)
         settings.push_back({"photon_radius", exact(s.estimator.photon_radius)});

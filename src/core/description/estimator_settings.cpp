@@ -33,4 +33,17 @@ std::optional<LightSampling> parse_light_sampling(const std::string& s) {
     return parse_one_of(s, {LightSampling::nee, LightSampling::mis});
 }
 
+const char* name_of(LightSelection l) {
+    switch (l) {
+        case LightSelection::power: return "power";
+        case LightSelection::bvh: return "bvh";
+        case LightSelection::area: return "area";
+        case LightSelection::automatic: break;
+    }
+    return "auto";
+}
+std::optional<LightSelection> parse_light_selection(const std::string& s) {
+    return parse_one_of(s, {LightSelection::automatic, LightSelection::area, LightSelection::power, LightSelection::bvh});
+}
+
 }  // namespace wt

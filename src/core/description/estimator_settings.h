@@ -21,6 +21,17 @@ enum class LightSampling : uint8_t {
     mis,  // light samples and the BSDF-sampled direction both count, power heuristic (Veach 1997)
 };
 
+// How a light sample picks one of the emissive triangles (core/lights/emitter_selection.h).
+// Light paths (light tracing, photons) start by area whichever is chosen.
+enum class LightSelection : uint8_t {
+    // power where the scene has many emitters whose radiance differs, else area (so a scene with
+    // few lights keeps its image bits): chosen_light_selection(), measured in bench/README.md
+    automatic,
+    area,   // in proportion to area: pdf 1 / total area on every light, whatever it emits
+    power,  // in proportion to power (area times luminance of the emission)
+    bvh,    // by a light tree, in proportion to each node's importance to the shading point
+};
+
 // Who finds caustic paths: a diffuse surface lit by the lights through one or more mirror or
 // glass bounces (diffuse -> specular... -> light), seen directly (camera -> diffuse) or itself
 // seen through a mirror or glass (camera -> specular... -> diffuse).
@@ -48,6 +59,10 @@ struct EstimatorSettings {
     // through a mirror: photons" (the most efficient of the three on every scene measured, its
     // bias below its noise).
     CausticPaths caustics = CausticPaths::photons;
+    // After the fields a positional initialiser names ({sampler, light_sampling, clamp,
+    // caustics}), so they keep their meaning, and in caustics' padding, so the settings every
+    // stage copies keep their size.
+    LightSelection light_selection = LightSelection::automatic;
     // With light tracing, light paths per pixel of the image and per sample: the light-tracing
     // work per sample is this times width x height paths.
     float light_paths_per_pixel = 1.0f;
@@ -60,8 +75,10 @@ struct EstimatorSettings {
 const char* name_of(SamplerKind);
 const char* name_of(LightSampling);
 const char* name_of(CausticPaths);
+const char* name_of(LightSelection);
 std::optional<CausticPaths> parse_caustic_paths(const std::string&);
 std::optional<SamplerKind> parse_sampler(const std::string&);
 std::optional<LightSampling> parse_light_sampling(const std::string&);
+std::optional<LightSelection> parse_light_selection(const std::string&);
 
 }  // namespace wt

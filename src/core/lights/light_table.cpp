@@ -13,13 +13,14 @@ LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>
         const Material& m = materials[triangles.material[i]];
         if (!m.is_emissive()) continue;
         const bool parallelogram = triangles.is_parallelogram(i);
-        const double area = (parallelogram ? 1.0 : 0.5) * double(glm::length(glm::cross(triangles.edge1(i), triangles.edge2(i))));
+        const double area = emitter_area(triangles, i);
         if (area <= 0.0) continue;  // the loader rejects degenerate lights; built-in scenes may not
         running_area += area;
         cumulative.push_back(running_area);
         const glm::vec3 v0 = triangles.vertex0(i), e1 = triangles.edge1(i), e2 = triangles.edge2(i);
         emitters_.push_back({v0, e1, e2, triangles.normal(i), m.emission, 0.0f, magnitude(v0), magnitude(e1), magnitude(e2),
                              parallelogram});
+        triangles_.push_back(i);
     }
     total_area_ = float(running_area);
     pdf_area_ = 1.0f / total_area_;

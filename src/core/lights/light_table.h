@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/geometry/geometry_soa.h"
@@ -16,6 +17,12 @@
 #include "core/description/scene_description.h"
 
 namespace wt {
+
+// The area of scene triangle i, a parallelogram's whole: what the light table, the lights'
+// power and the selection by power weigh an emitter by.
+inline double emitter_area(const TriangleSoA& triangles, uint32_t i) {
+    return (triangles.is_parallelogram(i) ? 1.0 : 0.5) * double(glm::length(glm::cross(triangles.edge1(i), triangles.edge2(i))));
+}
 
 struct LightSample {
     glm::vec3 position;
@@ -46,6 +53,12 @@ public:
     // Inline: it runs once per shadow ray, and a call returning this struct cost a third of it.
     LightSample sample(const TriangleSoA& triangles, float u_choice, float u0, float u1) const;
 
+    // A point (u0, u1) on emitter k (an index into this table), with pdf_area left to the caller:
+    // how light selection by power or by the light tree (core/lights/emitter_selection.h) samples.
+    LightSample sample_emitter(std::size_t k, float u0, float u1) const { return point_on(emitters_[k], u0, u1); }
+    // The scene triangle emitter k is.
+    uint32_t triangle_of(std::size_t k) const { return triangles_[k]; }
+
 private:
     // The first emitter whose cdf exceeds u_choice (the last if none does, or u_choice is NaN).
     // The cdf never decreases, so that is the number of cdf entries before the last that u_choice
@@ -72,21 +85,28 @@ private:
         glm::vec3 abs_v0, abs_e1, abs_e2;  // for the sample's error bound, taken once here
         bool parallelogram;  // (u, v) uniform in the unit square, not folded into the triangle
     };
+    static LightSample point_on(const Emitter& e, float u0, float u1);
+
     std::vector<Emitter> emitters_;
+    std::vector<uint32_t> triangles_;  // per emitter, its index in the scene's triangles
     std::size_t candidates_ = 0;  // emitters_.size() - 1: the last is taken when no other is
     float total_area_ = 0.0f;
     float pdf_area_ = 0.0f;  // 1 / total_area_, divided once here rather than per sample
     float pdf_area_alone_ = 0.0f;
 };
 
-inline LightSample LightTable::sample(const TriangleSoA&, float u_choice, float u0, float u1) const {
-    const Emitter& e = emitters_[pick(u_choice)];
+inline LightSample LightTable::point_on(const Emitter& e, float u0, float u1) {
     const glm::vec2 b = e.parallelogram ? glm::vec2(u0, u1) : sample_uniform_triangle(u0, u1);
     LightSample s;
     s.position = e.v0 + b.x * e.e1 + b.y * e.e2;
     s.error = triangle_point_error_from_magnitudes(e.abs_v0, e.abs_e1, e.abs_e2, b.x, b.y);
     s.normal = e.normal;
     s.radiance = e.radiance;
+    return s;
+}
+
+inline LightSample LightTable::sample(const TriangleSoA&, float u_choice, float u0, float u1) const {
+    LightSample s = point_on(emitters_[pick(u_choice)], u0, u1);
     s.pdf_area = pdf_area_;
     return s;
 }

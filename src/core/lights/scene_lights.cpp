@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/lights/light_table.h"
+
 namespace wt {
 
 namespace {
@@ -90,9 +92,7 @@ double area_light_power(const TriangleSoA& triangles, const std::vector<Material
     for (uint32_t i = 0; i < triangles.size(); ++i) {
         const Material& m = materials[triangles.material[i]];
         if (!m.is_emissive()) continue;
-        const double area = (triangles.is_parallelogram(i) ? 1.0 : 0.5) *
-                            double(glm::length(glm::cross(triangles.edge1(i), triangles.edge2(i))));
-        power += kPiDouble * area * luminance(m.emission);
+        power += kPiDouble * emitter_area(triangles, i) * luminance(m.emission);
     }
     return power;
 }

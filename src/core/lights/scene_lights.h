@@ -7,8 +7,9 @@
 // environment pi r^2 times its radiance integrated over the sphere, r the radius of the scene's
 // bounding sphere (pbrt-v4's Light::Phi: the infinite lights' power on the disk that covers the scene).
 //
-// Built only when the list is not empty: a scene with area lights alone keeps LightTable's
-// sampling and the code paths it had (Scene::listed_lights).
+// Built only when the list is not empty, or the emissive triangles are picked by power or the
+// light tree (then with the area lights as its one entry): a scene with area lights alone and
+// selection by area keeps LightTable's sampling and the code paths it had (Scene::listed_lights).
 
 #include <cstdint>
 #include <optional>

@@ -2,8 +2,9 @@
 // Light samples and escaped rays in a scene with a "lights" list (Scene::listed_lights): the
 // counterparts of DirectLightSampler, GlossyLightSampler and emission_added (path_vertex.h,
 // glossy_light_sampler.h) when a light sample may go to the area lights, the environment or a
-// punctual light, picked by power (core/lights/scene_lights.h). A scene without the list never
-// runs this code: its vertices run today's samplers, on today's bits.
+// punctual light, picked by power (core/lights/scene_lights.h), and whose area light may be
+// picked by power or the light tree (Scene::emitter_selection). A scene with neither never runs
+// this code: its vertices run today's samplers, on today's bits.
 //
 // Which strategy counts what, so each estimator stays unbiased (as for the area lights):
 // - Point and spot lights and a directional light of angle 0 are deltas: only light samples
@@ -43,14 +44,19 @@ struct IncidentLight {
 };
 
 // Light sample (u_choice, u0, u1) of the scene's lights from `position`; false if it cannot
-// contribute (an area light seen from behind, outside a spot's cone, a zero pdf).
-inline bool sample_incident_light(const Scene& scene, const glm::vec3& position, float u_choice, float u0, float u1,
-                                  IncidentLight& out) {
+// contribute (an area light seen from behind, outside a spot's cone, a zero pdf). An emitter
+// picked by power or the light tree (Scene::emitter_selection) is picked for `selection_point`,
+// the vertex's shading point moved off its surface (as the origin of the BSDF-sampled ray whose
+// emission emission_added weighs with the same pdf), and the vertex's geometric normal.
+inline bool sample_incident_light(const Scene& scene, const glm::vec3& position, const glm::vec3& selection_point,
+                                  const glm::vec3& normal, float u_choice, float u0, float u1, IncidentLight& out) {
     const SceneLights& lights = scene.listed_lights;
     float rescaled = 0.0f;
     const int which = lights.pick(u_choice, rescaled);
     if (which == -1) {
-        const LightSample light = scene.lights.sample(scene.triangles, rescaled, u0, u1);  // pdf includes the selection
+        LightSample light;  // its pdf includes the selection
+        if (scene.emitter_selection.empty()) light = scene.lights.sample(scene.triangles, rescaled, u0, u1);
+        else if (!scene.emitter_selection.sample(scene.lights, selection_point, normal, rescaled, u0, u1, light)) return false;
         const glm::vec3 to_light = light.position - position;
         const float dist2 = glm::dot(to_light, to_light);
         if (!(dist2 > 0.0f)) return false;
@@ -120,11 +126,12 @@ inline void aim_incident_shadow_ray(ShadowRay& s, const glm::vec3& origin, const
 template <typename E, typename Vertex>
 class ListedLightSampler {
 public:
-    ListedLightSampler(const Scene& scene, const Vertex& vertex, const glm::vec3& position, const glm::vec3& throughput,
+    ListedLightSampler(const Scene& scene, const Vertex& vertex, const SurfacePoint& surface, const glm::vec3& throughput,
                        const PathSeed& path, uint32_t bounce, uint32_t count)
         : scene_(scene),
           vertex_(vertex),
-          position_(position),
+          position_(surface.position),
+          normal_(surface.normal),
           throughput_(throughput),
           random_(path, bounce, count),
           count_(count),
@@ -143,7 +150,8 @@ public:
         const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
         const UniformPair point = random_.pair(base + dim::light_u);
         IncidentLight light;
-        if (!sample_incident_light(scene_, position_, random_(base + dim::light_choice), point.first, point.second, light))
+        if (!sample_incident_light(scene_, position_, vertex_.selection_point(), normal_, random_(base + dim::light_choice),
+                                   point.first, point.second, light))
             return false;
         glm::vec3 f_cos;
         float bsdf_pdf = 0.0f;
@@ -160,6 +168,7 @@ private:
     const Scene& scene_;
     const Vertex& vertex_;
     glm::vec3 position_;
+    glm::vec3 normal_;  // geometric, as the shading point's BSDF-sampled ray carries it (emission_added)
     glm::vec3 throughput_;
     typename E::Sampler random_;
     uint32_t count_;
@@ -191,6 +200,8 @@ struct DiffuseListedVertex {
         origin = at.ray_origin;
         return true;
     }
+    // The origin of this vertex's BSDF-sampled ray (continue_path moves it off the same side).
+    const glm::vec3& selection_point() const { return at.ray_origin; }
 };
 
 // A rough vertex: the microfacet BSDF, towards both sides for rough glass; always weighed
@@ -217,6 +228,10 @@ struct GlossyListedVertex {
         origin = cos_x > 0.0f ? origin_front : origin_behind;
         return true;
     }
+    // The origin of a reflected BSDF-sampled ray. A transmitted one starts from origin_behind, a
+    // rounding error's width away: its emission's pdf is asked from there, and may differ from
+    // the one the light sample used in the last bits.
+    const glm::vec3& selection_point() const { return origin_front; }
 };
 
 // Every light sample of the vertex (diffuse or rough; none elsewhere), to emit(const ShadowRay&).
@@ -226,11 +241,11 @@ inline void sample_listed_lights(const Scene& scene, const Material& m, const Su
     const uint32_t count = uint32_t(scene.settings.shadow_rays);
     if (gathers_direct_light(m)) {
         const DiffuseListedVertex vertex(m, light_sampling_point(surface, d), d);
-        ListedLightSampler<E, DiffuseListedVertex>(scene, vertex, surface.position, throughput, path, bounce, count)
+        ListedLightSampler<E, DiffuseListedVertex>(scene, vertex, surface, throughput, path, bounce, count)
             .sample_all(emit);
     } else if (m.is_microfacet()) {
         const GlossyListedVertex vertex(scene, m, surface, d);
-        ListedLightSampler<E, GlossyListedVertex>(scene, vertex, surface.position, throughput, path, bounce, count)
+        ListedLightSampler<E, GlossyListedVertex>(scene, vertex, surface, throughput, path, bounce, count)
             .sample_all(emit);
     }
 }

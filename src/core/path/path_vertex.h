@@ -110,17 +110,26 @@ inline glm::vec3 diffuse_bsdf_for_power(const DiffuseBsdfAtView& bsdf, const Lig
 // when light samples there could have found this point too (mis only: 0 after the camera and
 // after specular bounces, where no light sample competes and the emission counts in full).
 // `kRough`: the scene may have rough materials (Scene::has_rough_materials); without them and
-// without mis no pdf is ever passed, and the test is compiled out.
-template <typename E, bool kRough = true>
+// without mis no pdf is ever passed, and the test is compiled out. `kListedLights`: the scene
+// runs the listed lights' samplers (core/path/listed_light_sampler.h), whose emitter may have
+// been picked by power or the light tree: then the pdf is that of triangle `prim` (the hit's)
+// from the ray's origin and `previous_normal`, the previous vertex's geometric normal, which
+// its light samples were picked for.
+template <typename E, bool kRough = true, bool kListedLights = false>
 inline glm::vec3 emission_added(const Scene& scene, const Material& m, const SurfacePoint& surface, const Ray& ray, float t,
-                                const glm::vec3& throughput, float bsdf_pdf, uint32_t bounce) {
+                                const glm::vec3& throughput, float bsdf_pdf, uint32_t bounce, uint32_t prim = 0,
+                                const glm::vec3& previous_normal = glm::vec3(0.0f)) {
     glm::vec3 e = throughput * emitted_towards(m, surface.normal, ray.direction);
     // (Without mis only a rough bounce passes a pdf: GlossyLightSampler weights its light samples.)
     if constexpr (E::mis || kRough) {
         if (bsdf_pdf > 0.0f && m.is_emissive()) {
             // The light samples' pdf for this point, per unit solid angle at the previous vertex.
             const float cos_light = -glm::dot(surface.normal, ray.direction);
-            const float light_pdf = scene.lights.pdf_area() * t * t / cos_light;
+            float pdf_area = scene.lights.pdf_area();
+            if constexpr (kListedLights)
+                if (!scene.emitter_selection.empty())
+                    pdf_area = scene.emitter_selection.pdf_area(ray.origin, previous_normal, prim);
+            const float light_pdf = pdf_area * t * t / cos_light;
             e *= power_heuristic(bsdf_pdf, float(scene.settings.shadow_rays) * light_pdf);
         }
     }

@@ -169,10 +169,18 @@ Scene build_scene(const SceneDescription& description) {
         set_camera_cone(scene, description);
     }
     scene.lights = LightTable(scene.triangles, scene.materials);
-    if (!description.lights.empty()) {
+    // Another selection than by area only where there is a choice: with one emitter they all agree.
+    const LightSelection selection =
+        chosen_light_selection(description.settings.estimator.light_selection, scene.lights, scene.triangles, scene.materials);
+    if (selection != LightSelection::area && scene.lights.size() > 1)
+        scene.emitter_selection = EmitterSelection(selection, scene.lights, scene.triangles, scene.materials);
+    if (!description.lights.empty() || !scene.emitter_selection.empty()) {
         scene.listed_lights = SceneLights(description.lights, scene.lights.empty() ? 0.0 : area_light_power(scene.triangles, scene.materials),
                                           bounding_sphere(scene));
-        if (!scene.lights.empty()) scene.lights.set_selection_probability(scene.listed_lights.area_probability());
+        if (!scene.lights.empty()) {
+            scene.lights.set_selection_probability(scene.listed_lights.area_probability());
+            scene.emitter_selection.set_selection_probability(scene.listed_lights.area_probability());
+        }
     }
     // The loader refuses degenerate lights, so a description with an emitter has a light table,
     // and one with a "lights" list the list.

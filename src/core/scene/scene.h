@@ -12,6 +12,7 @@
 #include "core/camera/pixel_filter.h"
 #include "core/geometry/geometry_soa.h"
 #include "core/instances/scene_instances.h"
+#include "core/lights/emitter_selection.h"
 #include "core/lights/light_table.h"
 #include "core/lights/scene_lights.h"
 #include "core/base/ray.h"
@@ -35,8 +36,13 @@ struct Scene {
     // description has instances, and then the renderer traces the flat BVH alone.
     SceneInstances instances;
     LightTable lights;  // the emissive triangles
+    // Their selection by power or by the light tree (render.light_selection), where there are two
+    // or more of them; empty with "area" (LightTable's own choice).
+    EmitterSelection emitter_selection;
     // The scene file's "lights" list, with the area lights as one entry of its selection; empty
-    // without the list, and then no code reads it (the integrators pick their loop once).
+    // without the list and without an emitter selection, and then no code reads it (the
+    // integrators pick their loop once). With an emitter selection alone it holds the area
+    // lights only, and the integrators run the listed lights' samplers, which ask the selection.
     SceneLights listed_lights;
     // Light paths estimate the caustics seen directly (path_vertex.h, light_paths_count_emission):
     // asked for by the settings, and the scene has lights and a mirror or glass surface.

@@ -119,7 +119,7 @@ CameraDescription read_camera(const Reader& in, const Json& j, const std::string
 RenderSettings read_render(const Reader& in, const Json& j, const std::string& path) {
     in.expect_object(j, path);
     in.check_keys(j, path, {"width", "height", "spp", "shadow_rays", "seed", "max_bounces", "rr_start_bounce",
-                            "triangle_test", "sphere_test", "fresnel", "multiple_scattering", "sampler", "light_sampling", "clamp_indirect",
+                            "triangle_test", "sphere_test", "fresnel", "multiple_scattering", "sampler", "light_sampling", "light_selection", "clamp_indirect",
                             "caustics", "light_paths_per_pixel", "photon_radius", "adaptive_threshold",
                             "adaptive_min_spp", "filter", "filter_width"});
     RenderSettings s;
@@ -148,6 +148,7 @@ RenderSettings read_render(const Reader& in, const Json& j, const std::string& p
     read_choice("multiple_scattering", s.accuracy.multiple_scattering, parse_multiple_scattering, "\"none\", \"kulla_conty\"");
     read_choice("sampler", s.estimator.sampler, parse_sampler, "\"independent\", \"stratified\", \"sobol\"");
     read_choice("light_sampling", s.estimator.light_sampling, parse_light_sampling, "\"nee\", \"mis\"");
+    read_choice("light_selection", s.estimator.light_selection, parse_light_selection, "\"auto\", \"area\", \"power\", \"bvh\"");
     read_choice("caustics", s.estimator.caustics, parse_caustic_paths,
                 "\"path\", \"light_tracing\", \"photons\"");
     read_choice("filter", s.filter.kind, parse_filter_kind, "\"box\", \"gaussian\", \"blackman_harris\", \"mitchell\"");

@@ -23,12 +23,19 @@ struct PathTable {
     AlignedVector<float> filter_weight;  // CameraRay::weight: multiplies the radiance on the film
     // The albedo, normal and depth AOVs' data per path; empty (and never touched) without them.
     AlignedVector<FirstSurface> first_surface;
+    // A scene with an emitter selection (Scene::emitter_selection) only, else empty: the
+    // geometric normal of the vertex that cast the path's ray, which the light tree weighs the
+    // emitter the ray hits for (emission_added), as that vertex's light samples were picked.
+    AlignedVector<float> nx, ny, nz;
 
-    void resize(std::size_t n, bool with_aovs) {
+    void resize(std::size_t n, bool with_aovs, bool with_normals = false) {
         pixel.resize(n), sample.resize(n), key.resize(n);
         radiance_r.resize(n), radiance_g.resize(n), radiance_b.resize(n), filter_weight.resize(n);
         first_surface.resize(with_aovs ? n : 0);
+        for (auto* a : {&nx, &ny, &nz}) a->resize(with_normals ? n : 0);
     }
+    void set_normal(uint32_t slot, const glm::vec3& n) { nx[slot] = n.x, ny[slot] = n.y, nz[slot] = n.z; }
+    glm::vec3 normal(uint32_t slot) const { return {nx[slot], ny[slot], nz[slot]}; }
     void add_radiance(uint32_t slot, const glm::vec3& c) {
         radiance_r[slot] += c.x, radiance_g[slot] += c.y, radiance_b[slot] += c.z;
     }
@@ -123,16 +130,18 @@ struct WavefrontWorkspace {
     HitQueue hits;
     ShadowQueue shadows;
 
-    // What the constructor allocates, per path: the path table (2 x 4 + 8 + 4 x 4 bytes, and the
-    // first surface with AOVs), two ray queues (10 x 4 + 4 + 1), the hits (3 x 4 + 4); per shadow
-    // ray (10 x 4 + 4 + 1).
-    static constexpr std::size_t bytes_needed(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs) {
-        const std::size_t path_table = 32 + (with_aovs ? sizeof(FirstSurface) : 0);
+    // What the constructor allocates, per path: the path table (2 x 4 + 8 + 4 x 4 bytes, the
+    // first surface with AOVs, 3 x 4 with the normals), two ray queues (10 x 4 + 4 + 1), the
+    // hits (3 x 4 + 4); per shadow ray (10 x 4 + 4 + 1).
+    static constexpr std::size_t bytes_needed(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs,
+                                              bool with_normals = false) {
+        const std::size_t path_table = 32 + (with_aovs ? sizeof(FirstSurface) : 0) + (with_normals ? 12 : 0);
         return batch_paths * (path_table + 2 * 45 + 16) + batch_paths * shadow_rays_per_hit * 45;
     }
 
-    WavefrontWorkspace(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs) {
-        paths.resize(batch_paths, with_aovs);
+    // `with_normals`: the scene has an emitter selection (PathTable::nx).
+    WavefrontWorkspace(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs, bool with_normals = false) {
+        paths.resize(batch_paths, with_aovs, with_normals);
         rays.reserve(batch_paths);
         next_rays.reserve(batch_paths);
         hits.reserve(batch_paths);

@@ -62,11 +62,14 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         }
         const uint8_t flags = rays.count_emission[i];
         if (flags & RayQueue::kCountEmission)
-            paths.add_radiance(slot, emission_added<E, kRough>(scene, m, surface, ray, hit.t, throughput,
-                                                               E::mis || (kRough && (flags & RayQueue::kRoughPdf))
-                                                                   ? rays.bsdf_pdf[i]
-                                                                   : 0.0f,
-                                                               bounce));
+            paths.add_radiance(slot, emission_added<E, kRough, kListedLights>(scene, m, surface, ray, hit.t, throughput,
+                                                                              E::mis || (kRough && (flags & RayQueue::kRoughPdf))
+                                                                                  ? rays.bsdf_pdf[i]
+                                                                                  : 0.0f,
+                                                                              bounce, hit.prim,
+                                                                              kListedLights && !scene.emitter_selection.empty()
+                                                                                  ? paths.normal(slot)
+                                                                                  : glm::vec3(0.0f)));
         const bool elsewhere = flags & RayQueue::kSpecularLightElsewhere;
         if (photons && gathers_photons(scene, m, bounce, elsewhere))
             paths.add_radiance(slot, throughput * gather_photons(photons->map(path.sample), m, surface, ray.direction,
@@ -86,8 +89,10 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
         const auto next = continue_path<E, kRough>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere);
         if (next) {
             next_rays.push<E::mis>(*next, slot);
-            if constexpr (kListedLights)
+            if constexpr (kListedLights) {
                 if (next->count_environment) next_rays.count_emission[next_rays.count - 1] |= RayQueue::kCountEnvironment;
+                if (!scene.emitter_selection.empty()) paths.set_normal(slot, surface.normal);
+            }
         }
     }
 }
