@@ -10,6 +10,7 @@
 #include "kernels/caustics/photon_memory.h"
 #include "kernels/work/tiles.h"
 #include "kernels/wavefront/wavefront_renderer.h"
+#include "many_lights_scene.h"
 #include "render_helpers.h"
 #include "test_scenes.h"
 
@@ -149,6 +150,31 @@ TEST(MemoryEstimate, PhotonMapsAreCountedOnlyWithPhotonsAndHoldWholeSamples) {
     EXPECT_NE(problem.find("photon maps"), std::string::npos) << problem;
     EXPECT_NE(problem.find("lower --light-paths-per-pixel"), std::string::npos) << problem;
     EXPECT_EQ(wt::memory_problem(e, 24e9), "");
+}
+
+// The lights' tables are counted: the emitters' own, and what a selection by power or by the
+// light tree adds over area selection, which builds nothing (emitter_selection.h).
+TEST(MemoryEstimate, CountsTheLightsAndWhatTheirSelectionBuilds) {
+    wt::RenderOptions options;
+    options.threads = 1;
+    const auto lights_bytes = [&](wt::LightSelection selection) {
+        const wt::Scene scene = wt::build_scene(wt::test::many_lights_room(24, wt::LightSampling::nee, selection));
+        const wt::MemoryEstimate e = wt::estimate_render_memory(scene, options);
+        EXPECT_DOUBLE_EQ(e.total(), e.to_allocate() + e.geometry + e.textures + e.lights);
+        return e.lights;
+    };
+    const double area = lights_bytes(wt::LightSelection::area), power = lights_bytes(wt::LightSelection::power),
+                 tree = lights_bytes(wt::LightSelection::bvh);
+    // More than 24 x 24 emitters' sampling records of 16 floats each, and each selection adds at
+    // least a float per emitter (power: its cdf and probability; the tree: a node per emitter).
+    EXPECT_GT(area, 24.0 * 24.0 * 16.0 * sizeof(float));
+    EXPECT_GT(power, area + 24.0 * 24.0 * 2.0 * sizeof(float));
+    EXPECT_GT(tree, power);
+    // The hexroom's lamp has a table; without its emission there is none.
+    EXPECT_GT(wt::estimate_render_memory(wt::build_scene(wt::test::hexroom(8, 8, 1)), options).lights, 0.0);
+    wt::SceneDescription unlit = wt::test::hexroom(8, 8, 1);
+    for (wt::Material& m : unlit.materials) m.emission = glm::vec3(0.0f);
+    EXPECT_EQ(wt::estimate_render_memory(wt::build_scene(unlit), options).lights, 0.0);
 }
 
 }  // namespace

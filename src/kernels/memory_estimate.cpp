@@ -67,10 +67,6 @@ double bytes_per_instance(int node_width) {
            node / double(node_width - 1);
 }
 
-namespace {
-
-}  // namespace
-
 MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& options) {
     MemoryEstimate e;
     const RenderSettings& s = scene.settings;
@@ -91,6 +87,7 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
     e.instance_count = scene.instances.instances.size();
     if (e.instance_count > 0) e.instances = double(e.instance_count) * bytes_per_instance(options.bvh.node_width);
     e.textures = texture_bytes(scene);
+    e.lights = double(scene.lights.bytes() + scene.emitter_selection.bytes() + scene.listed_lights.bytes());
     return e;
 }
 
@@ -118,6 +115,7 @@ std::string memory_problem(const MemoryEstimate& e, double available) {
     if (e.instance_count > 0)
         msg << ", " << e.instance_count << " instances x " << format_bytes(e.instances / double(e.instance_count));
     if (e.textures > 0.0) msg << ", textures " << format_bytes(e.textures);
+    if (e.lights > 0.0) msg << ", lights " << format_bytes(e.lights);
     msg << "), more than the " << format_bytes(available) << " of memory available; ";
     // Name what dominates.
     if (e.photons >= e.queues() && e.photons >= e.film && e.photons >= e.bvh && e.photons >= e.instances)

@@ -28,11 +28,12 @@ struct MemoryEstimate {
     double instances = 0.0;         // placements, their records and the top-level tree (part allocated)
     std::size_t instance_count = 0;
     double textures = 0.0;          // the textures' mip pyramids and coordinates (allocated, as geometry)
+    double lights = 0.0;            // the emitters' table, their selection by power or tree, the listed lights (allocated)
 
     double queues() const { return queues_per_worker * double(workers); }
     // What the render has yet to allocate.
     double to_allocate() const { return film + queues() + bvh + photons + instances; }
-    double total() const { return to_allocate() + geometry + textures; }
+    double total() const { return to_allocate() + geometry + textures + lights; }
 };
 
 // What one instance costs, whatever its mesh: its placement, its traversal record and its share

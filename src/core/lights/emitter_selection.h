@@ -48,6 +48,10 @@ public:
     bool empty() const { return inverse_area_.empty(); }
     LightSelection how() const { return how_; }
     const LightTree& tree() const { return tree_; }
+    std::size_t bytes() const {
+        return power_.bytes() + tree_.bytes() + inverse_area_.capacity() * sizeof(float) +
+               emitter_of_triangle_.capacity() * sizeof(uint32_t);
+    }
     // The probability the area lights are picked with among the scene's lights (SceneLights).
     void set_selection_probability(float p) { selection_probability_ = p; }
 

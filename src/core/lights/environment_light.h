@@ -44,6 +44,11 @@ public:
     glm::vec2 map_point(const glm::vec3& d) const;
     glm::vec3 direction(glm::vec2 map_point) const;
 
+    // The map's texels and its sampling distribution.
+    std::size_t bytes() const {
+        return (map_ ? map_->rgb.capacity() * sizeof(float) : 0) + distribution_.bytes();
+    }
+
 private:
     glm::vec3 texel(glm::vec2 p) const;
 

@@ -58,6 +58,7 @@ public:
     LightSample sample_emitter(std::size_t k, float u0, float u1) const { return point_on(emitters_[k], u0, u1); }
     // The scene triangle emitter k is.
     uint32_t triangle_of(std::size_t k) const { return triangles_[k]; }
+    std::size_t bytes() const { return emitters_.capacity() * sizeof(Emitter) + triangles_.capacity() * sizeof(uint32_t); }
 
 private:
     // The first emitter whose cdf exceeds u_choice (the last if none does, or u_choice is NaN).

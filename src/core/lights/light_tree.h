@@ -29,6 +29,7 @@ public:
     std::size_t size() const { return trails_.size(); }  // emitters
     std::size_t node_count() const { return nodes_.size(); }
     int depth() const { return depth_; }
+    std::size_t bytes() const { return nodes_.capacity() * sizeof(Node) + trails_.capacity() * sizeof(Trail); }
 
     struct Pick {
         uint32_t emitter;

@@ -90,4 +90,10 @@ std::size_t DiscreteDistribution::pick(float u, float& rescaled) const {
     return i;
 }
 
+std::size_t PiecewiseConstant2D::bytes() const {
+    std::size_t bytes = rows_.bytes() + columns_.capacity() * sizeof(PiecewiseConstant1D);
+    for (const PiecewiseConstant1D& column : columns_) bytes += column.bytes();
+    return bytes;
+}
+
 }  // namespace wt

@@ -24,6 +24,7 @@ public:
     float sample(float u, uint32_t& cell) const;
     // Density per unit x of every point in the cell: weight / mean.
     float density(uint32_t cell) const { return density_[cell]; }
+    std::size_t bytes() const { return (cdf_.capacity() + density_.capacity()) * sizeof(float); }
 
 private:
     std::vector<float> cdf_;      // size() + 1, from 0 to exactly 1
@@ -40,6 +41,7 @@ public:
     // (x, y) in [0, 1)^2 with density density(x, y) per unit area.
     glm::vec2 sample(float u0, float u1, float& density) const;
     float density(glm::vec2 p) const;
+    std::size_t bytes() const;
 
 private:
     int width_ = 0, height_ = 0;
@@ -58,6 +60,7 @@ public:
     // The item u in [0, 1) picks; `rescaled` is u's position within the item's interval, itself
     // uniform in [0, 1), for the item's own sampling.
     std::size_t pick(float u, float& rescaled) const;
+    std::size_t bytes() const { return (cdf_.capacity() + probability_.capacity()) * sizeof(float); }
 
 private:
     std::vector<float> cdf_;  // size() + 1

@@ -38,6 +38,10 @@ public:
     const std::optional<EnvironmentLight>& environment() const { return environment_; }
     float environment_probability() const { return environment_probability_; }
     const std::vector<PunctualLight>& punctual() const { return punctual_; }
+    std::size_t bytes() const {
+        return entries_.capacity() * sizeof(int) + selection_.bytes() + (environment_ ? environment_->bytes() : 0) +
+               punctual_.capacity() * sizeof(PunctualLight);
+    }
     float punctual_probability(std::size_t i) const { return selection_.probability(first_punctual_ + i); }
     // Some light a ray that leaves the scene can see (the environment, a directional light with an angle).
     bool seen_by_escaping_rays() const { return seen_by_escaping_rays_; }
