@@ -20,6 +20,7 @@
 #include "core/checkpoint/checkpoint_format.h"
 #include "core/checkpoint/checkpoint_match.h"
 #include "core/system/version.h"
+#include "checkpoint_rewrite.h"
 
 namespace wt {
 namespace {
@@ -63,21 +64,8 @@ std::string expect_refused(const std::string& bytes, const std::string& name = "
 // `bytes` with its text header replaced and the checksum made valid again: what a writer with a
 // bug (or a hostile file) could produce, to test the checks behind the checksum.
 std::string with_header(const std::string& bytes, const std::string& from, const std::string& to) {
-    const uint32_t length = checkpoint_format::get_u32(reinterpret_cast<const unsigned char*>(bytes.data()) + 12);
-    std::string text = bytes.substr(16, length);
-    const std::size_t at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-    std::string out = bytes.substr(0, 12);
-    unsigned char len[4];
-    checkpoint_format::put_u32(len, uint32_t(text.size()));
-    out.append(reinterpret_cast<char*>(len), 4);
-    out += text;
-    out += bytes.substr(16 + length, bytes.size() - 16 - length - 8);
-    unsigned char sum[8];
-    checkpoint_format::put_u64(sum, XXH3_64bits(out.data(), out.size()));
-    out.append(reinterpret_cast<char*>(sum), 8);
-    return out;
+    EXPECT_NE(bytes.find(from), std::string::npos) << from;
+    return test::with_header_text(bytes, from, to);
 }
 
 TEST(Checkpoint, FilmAndHeaderComeBackBitForBit) {
@@ -318,13 +306,24 @@ TEST(Checkpoint, AdaptiveSettingsAreImageSettings) {
 // The fuzz target's seeds (tests/fuzz/corpus/fuzz_checkpoint) are checkpoints this reader
 // accepts, so the fuzzer starts from the decoder's far end after every format change; one has
 // adaptive state.
-TEST(Checkpoint, TheFuzzSeedsAreValidCheckpoints) {
+// The seeds carry the version that wrote them; the fuzz target gives them this program's
+// (checkpoint_rewrite.h), so they reach the film's decoder whatever version wrote them.
+TEST(Checkpoint, TheFuzzSeedsAreValidCheckpointsOfAnyVersion) {
     const fs::path corpus = fs::path(WT_SCENES_DIR) / ".." / "tests" / "fuzz" / "corpus" / "fuzz_checkpoint";
     int seeds = 0, adaptive = 0;
     for (const fs::directory_entry& e : fs::directory_iterator(corpus)) {
-        const Checkpoint c = read_checkpoint_file(e.path().string());
+        std::ifstream in(e.path(), std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::string name = e.path().string();
+        const Checkpoint c = parse_checkpoint(test::with_this_program_version(bytes), name);
         ++seeds;
         adaptive += !c.film.adaptive().empty();
+        // Of another version, a seed is refused as it is and read once rewritten.
+        const std::string other = test::with_header_text(test::with_this_program_version(bytes),
+                                                         std::string("program_version ") + program_version() + "\n",
+                                                         "program_version 0.0.1-other\n");
+        EXPECT_THROW(parse_checkpoint(other, name), CheckpointError) << name;
+        EXPECT_NO_THROW(parse_checkpoint(test::with_this_program_version(other), name)) << name;
     }
     EXPECT_GE(seeds, 3);
     EXPECT_EQ(adaptive, 1);
