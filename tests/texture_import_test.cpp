@@ -213,6 +213,18 @@ TEST_F(TextureImport, BadImagesNameTheFileMaterialAndField) {
     expect_error({}, truncated, "image 0");
     // 16385 pixels wide: refused from the header, whatever the file's size.
     expect_error({}, half_black_png(16385, 1), "16385 x 1 pixels, more than the 16384 per side");
+    // A PNG cut short in its first pixel data, claiming 2048 x 2048 pixels in a few hundred
+    // bytes: refused by its size before 50 MB of pixels are allocated. Whole, the same image reads.
+    const std::string big = half_black_png(2048, 2048);
+    EXPECT_GT(big.size(), 2048u * 257u / 1032u);
+    const std::size_t cut = big.find("IDAT") + 16;
+    ASSERT_LT(cut, 510u);
+    expect_error({}, big.substr(0, cut),
+                 std::to_string(cut) + " bytes cannot hold 2048 x 2048 PNG pixels (at least 510): the file is truncated or damaged");
+    GltfFile file;
+    const Json whole = square(file, {}, big);
+    write("whole.glb", test::glb(whole.dump(), file.bin()));
+    EXPECT_EQ(load_from_file("whole.glb").textures.size(), 1u);
 }
 
 // A square like square()'s in OBJ: vt with v up (flipped on reading), its material's map_Kd.

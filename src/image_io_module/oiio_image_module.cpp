@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,22 @@ std::string name_for_reader(const WtImageSource& source) {
     return {};
 }
 
+// The fewest bytes a PNG of width x height pixels can be. Its pixel rows (a filter byte and at
+// least one bit per pixel each) are one deflate stream, which expands at most 1032-fold (zlib's
+// technical details: a 258-byte match coded in about two bits). A smaller file is truncated or
+// damaged, and is refused before its pixels are allocated, however many it claims.
+size_t least_png_bytes(int width, int height) {
+    return size_t(height) * (1 + (size_t(width) + 7) / 8) / 1032;
+}
+
+// The size of what is read: the bytes given, or the file's.
+size_t source_bytes(const WtImageSource& source) {
+    if (source.bytes) return source.size;
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(source.name, ec);
+    return ec ? 0 : size_t(size);
+}
+
 int read_image_source(const WtImageSource* source, WtReadImage* image, char* error, size_t error_size) {
     *image = WtReadImage{};
     const std::string path = source->name;
@@ -110,6 +127,16 @@ int read_image_source(const WtImageSource* source, WtReadImage* image, char* err
         if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
             set_error(error, error_size, path + ": the image is empty");
             return 1;
+        }
+        if (std::strcmp(in->format_name(), "png") == 0) {
+            const size_t size = source_bytes(*source), least = least_png_bytes(spec.width, spec.height);
+            if (size < least) {
+                set_error(error, error_size,
+                          path + ": " + std::to_string(size) + " bytes cannot hold " + std::to_string(spec.width) + " x " +
+                              std::to_string(spec.height) + " PNG pixels (at least " + std::to_string(least) +
+                              "): the file is truncated or damaged");
+                return 1;
+            }
         }
         const size_t values = size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels);
         image->pixels = static_cast<float*>(std::malloc(std::max<size_t>(1, values) * sizeof(float)));
