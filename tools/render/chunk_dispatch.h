@@ -48,7 +48,7 @@ void check_coverage(std::vector<RankRanges> all, SampleRange samples);
 
 // Rank 0's side of the render. Construction starts the local thread, which calls `render` with
 // one chunk after another until none is left; answer() serves the other ranks from the calling
-// thread. `ranks` counts rank 0.
+// thread, which alone calls answer() and remote_ranks_working(). `ranks` counts rank 0.
 class ChunkDispatch {
 public:
     ChunkDispatch(SampleRange samples, int ranks, bool quiet, std::function<void(SampleRange)> render);
