@@ -7,11 +7,11 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <exception>
-#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <vector>
+
+#include "tools/render/chunk_dispatch.h"
 
 namespace wt {
 
@@ -36,27 +36,6 @@ int launcher_world_size() {
         if (const char* v = std::getenv(name)) return std::atoi(v);
     return 1;
 }
-
-// The chunks of the render not yet handed out, shared by rank 0's dispatcher and its own renderer.
-class ChunkQueue {
-public:
-    ChunkQueue(SampleRange samples, uint32_t chunk) : next_(samples.begin), end_(samples.end), chunk_(chunk) {}
-    bool take(SampleRange& out) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (next_ >= end_) return false;
-        out = {next_, std::min(end_, next_ + chunk_)};
-        next_ = out.end;
-        return true;
-    }
-
-private:
-    std::mutex mutex_;
-    uint32_t next_, end_, chunk_;
-};
-
-// Chunks small enough that the ranks finish close together, large enough that a chunk's
-// fixed costs (a message, the tiles' start) stay small: about 4 per rank.
-uint32_t chunk_size(SampleRange samples, int ranks) { return std::max(1u, samples.size() / uint32_t(4 * ranks)); }
 
 // Pieces under MPI's int count limit.
 constexpr std::size_t piece_bytes = std::size_t(1) << 30;
@@ -108,82 +87,22 @@ void receive_polling(void* data, int count, MPI_Datatype type, int tag, MPI_Stat
     }
 }
 
-class Progress {
-public:
-    Progress(SampleRange samples, bool quiet) : total_(samples.size()), quiet_(quiet) {}
-    void chunk_done(int rank, SampleRange r) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        done_ += r.size();
-        if (!quiet_)
-            std::fprintf(stderr, "wavetrace: MPI: rank %d rendered samples %u:%u (%u of %u spp done)\n", rank, r.begin, r.end,
-                         done_, total_);
-    }
-
-private:
-    std::mutex mutex_;
-    uint32_t done_ = 0, total_;
-    bool quiet_;
-};
-
-struct RankRanges {
-    int rank;
-    std::vector<SampleRange> ranges;
-};
-
-// The chunks of every rank must cover `samples` exactly once, or the image would claim samples it lacks.
-void check_coverage(std::vector<RankRanges> all, SampleRange samples) {
-    std::vector<std::pair<SampleRange, int>> chunks;
-    for (const RankRanges& r : all)
-        for (const SampleRange& s : r.ranges) chunks.push_back({s, r.rank});
-    std::sort(chunks.begin(), chunks.end(), [](const auto& a, const auto& b) { return a.first.begin < b.first.begin; });
-    uint32_t covered = samples.begin;
-    for (const auto& [range, rank] : chunks) {
-        if (range.begin != covered)
-            throw std::runtime_error("MPI: the ranks' films do not hold samples " + std::to_string(samples.begin) + ":" +
-                                     std::to_string(samples.end) + " exactly once (rank " + std::to_string(rank) +
-                                     " has " + std::to_string(range.begin) + ":" + std::to_string(range.end) +
-                                     " after sample " + std::to_string(covered) + "): no image written");
-        covered = range.end;
-    }
-    if (covered != samples.end)
-        throw std::runtime_error("MPI: the ranks' films end at sample " + std::to_string(covered) + " of " +
-                                 std::to_string(samples.end) + ": no image written");
-}
-
 DistributedRenderResult dispatch_and_reduce(RenderSession& session, Film& film, SampleRange samples, bool quiet) {
-    ChunkQueue queue(samples, chunk_size(samples, world_size));
-    Progress progress(samples, quiet);
     DistributedRenderResult result;
     std::vector<RankRanges> ranges{{0, {}}};
-    std::exception_ptr local_failure;
-    std::thread local([&] {
-        try {
-            for (SampleRange r; queue.take(r);) {
-                session.render_samples(film, r);
-                ranges[0].ranges.push_back(r);
-                progress.chunk_done(0, r);
-            }
-        } catch (...) {
-            local_failure = std::current_exception();
-        }
-    });
-    try {
-        for (int working = world_size - 1; working > 0;) {
+    {
+        // On a failure here, leaving this block stops rank 0's own renderer after its chunk.
+        ChunkDispatch dispatch(samples, world_size, quiet, [&](SampleRange r) { session.render_samples(film, r); });
+        while (dispatch.remote_ranks_working()) {
             uint32_t done[2];
             MPI_Status status;
             receive_polling(done, 2, MPI_UINT32_T, tag_request, status);
-            if (done[1] > done[0]) progress.chunk_done(status.MPI_SOURCE, {done[0], done[1]});
-            SampleRange next{0, 0};
-            if (!queue.take(next)) --working;
+            const SampleRange next = dispatch.answer(status.MPI_SOURCE, {done[0], done[1]});
             const uint32_t assign[2] = {next.begin, next.end};
             check(MPI_Send(assign, 2, MPI_UINT32_T, status.MPI_SOURCE, tag_assign, MPI_COMM_WORLD), "handing out samples");
         }
-    } catch (...) {
-        local.join();
-        throw;
+        ranges[0].ranges = dispatch.finish_local();
     }
-    local.join();
-    if (local_failure) std::rethrow_exception(local_failure);
     result.counts = session.result().counts;
 
     // In rank order, so the reduction is one fixed sequence (the sums are exact in any order).
