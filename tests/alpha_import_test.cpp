@@ -1,0 +1,126 @@
+// glTF's alphaMode, alphaCutoff and baseColorFactor's alpha as the loader maps them (glTF 2.0,
+// 3.9.4): MASK and BLEND become alpha-tested materials, OPAQUE ignores alpha; a negative cutoff
+// or an unknown mode is an error naming the file and the material; an alpha factor outside
+// [0, 1] is clamped with a note; and a MASK square whose alpha is below its cutoff lets the
+// camera see what is behind it, where the same square OPAQUE does not.
+
+#include <optional>
+
+#include <gtest/gtest.h>
+
+#include "core/scene_file/scene_error.h"
+#include "import_gltf_files.h"
+#include "lights_test_scenes.h"
+#include "render_helpers.h"
+
+namespace wt {
+namespace {
+
+using test::GltfFile;
+using Json = nlohmann::json;
+
+class AlphaImport : public test::ImportTest {
+protected:
+    // A square of side 8 in the z = 0 plane facing +z, its one material `material`, as a .glb
+    // named `name`, loaded with the file's materials.
+    SceneDescription load_square(const Json& material, const std::string& name = "square.glb") {
+        GltfFile file;
+        const int positions = file.positions({{-4, -4, 0}, {4, -4, 0}, {4, 4, 0}, {-4, 4, 0}});
+        const int indices = file.indices({0, 1, 2, 0, 2, 3}, 5125);
+        file.primitive({{"attributes", {{"POSITION", positions}}}, {"indices", indices}, {"material", 0}});
+        Json j = file.json("");
+        j["materials"] = {material};
+        write(name, test::glb(j.dump(), file.bin()));
+        return load(R"({"type": "mesh_file", "file": ")" + name + R"(", "material": "from_file"})");
+    }
+
+    std::string error_for_square(const Json& material) {
+        try {
+            load_square(material);
+        } catch (const SceneError& e) {
+            return e.what();
+        }
+        ADD_FAILURE() << "no SceneError for " << material.dump();
+        return "";
+    }
+
+    static const Material& square_material(const SceneDescription& d) { return d.materials[d.meshes.back().material]; }
+};
+
+// cutoff: written only if given (std::nullopt: the file leaves it out).
+Json material(const std::string& mode, double alpha, std::optional<double> cutoff = std::nullopt) {
+    Json m = {{"name", "leaf"}, {"alphaMode", mode}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.5, 0.5, alpha}}, {"metallicFactor", 0.0}}}};
+    if (cutoff) m["alphaCutoff"] = *cutoff;
+    return m;
+}
+
+bool any_note_has(const SceneDescription& d, const std::string& text) {
+    for (const std::string& note : d.notes)
+        if (note.find(text) != std::string::npos) return true;
+    return false;
+}
+
+TEST_F(AlphaImport, ModesCutoffAndFactorAreMapped) {
+    const SceneDescription mask = load_square(material("MASK", 0.8, 0.3));
+    const Material& m = square_material(mask);
+    EXPECT_EQ(m.alpha_mode, AlphaMode::mask);
+    EXPECT_EQ(m.alpha_cutoff, 0.3f);
+    EXPECT_EQ(m.alpha_factor, 0.8f);
+    EXPECT_EQ(m.alpha_texture, -1);
+    EXPECT_FALSE(any_note_has(mask, "alphaMode"));
+
+    const Material& default_cutoff = square_material(load_square(material("MASK", 0.8)));
+    EXPECT_EQ(default_cutoff.alpha_cutoff, 0.5f);  // the specification's default
+    EXPECT_EQ(square_material(load_square(material("BLEND", 0.25))).alpha_mode, AlphaMode::blend);
+    const Material& opaque = square_material(load_square(material("OPAQUE", 0.0)));
+    EXPECT_EQ(opaque.alpha_mode, AlphaMode::opaque);
+    EXPECT_FALSE(opaque.is_alpha_tested());
+
+    // A factor outside [0, 1] is clamped, with a note.
+    const SceneDescription over = load_square(material("MASK", 1.5));
+    EXPECT_EQ(square_material(over).alpha_factor, 1.0f);
+    EXPECT_TRUE(any_note_has(over, "baseColorFactor alpha outside [0, 1] (clamped)"));
+}
+
+TEST_F(AlphaImport, BadCutoffAndModeAreErrorsNamingFileAndMaterial) {
+    for (const Json& bad : {material("MASK", 1.0, -0.25), material("BLEND", 1.0, -1e-30)}) {
+        const std::string e = error_for_square(bad);
+        EXPECT_NE(e.find("square.glb"), std::string::npos) << e;
+        EXPECT_NE(e.find("material \"leaf\""), std::string::npos) << e;
+        EXPECT_NE(e.find("alphaCutoff"), std::string::npos) << e;
+    }
+    const std::string e = error_for_square(material("CUTOUT", 1.0));
+    EXPECT_NE(e.find("square.glb"), std::string::npos) << e;
+    EXPECT_NE(e.find("material \"leaf\""), std::string::npos) << e;
+    EXPECT_NE(e.find("alphaMode \"CUTOUT\""), std::string::npos) << e;
+    // OPAQUE ignores the cutoff, as it ignores alpha.
+    EXPECT_EQ(square_material(load_square(material("OPAQUE", 1.0, 0.0))).alpha_mode, AlphaMode::opaque);
+}
+
+TEST_F(AlphaImport, MaskedSquareShowsWhatIsBehindIt) {
+    // Seen from above under a constant environment of radiance 1: a square MASKed away (alpha
+    // 0.3 < 0.5) shows the environment, exactly 1 in every pixel; OPAQUE with the same alpha
+    // shows the square (which reflects less than 1), and so does MASK at cutoff 0.25.
+    const auto render = [&](const Json& m) {
+        SceneDescription d = load_square(m);
+        d.lights = {test::constant_environment(glm::vec3(1.0f))};
+        d.camera.eye = glm::vec3(0.0f, 0.0f, 2.0f);
+        d.camera.look_at = glm::vec3(0.0f);
+        d.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+        d.camera.fov_degrees = 40.0f;
+        d.settings.width = d.settings.height = 8;
+        d.settings.spp = 4;
+        return test::render_film(d, Integrator::wavefront).film;
+    };
+    const Film cut = render(material("MASK", 0.3));
+    const Film opaque = render(material("OPAQUE", 0.3));
+    const Film kept = render(material("MASK", 0.3, 0.25));
+    for (uint32_t p = 0; p < 64; ++p) {
+        EXPECT_EQ(cut.pixel_mean(p), glm::dvec3(1.0)) << p;
+        EXPECT_LT(opaque.pixel_mean(p).x, 0.9) << p;
+        EXPECT_EQ(kept.pixel_mean(p), opaque.pixel_mean(p)) << p;
+    }
+}
+
+}  // namespace
+}  // namespace wt
