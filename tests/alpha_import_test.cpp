@@ -26,14 +26,22 @@ class AlphaImport : public test::ImportTest {
 protected:
     // A square of side 8 in the z = 0 plane facing +z, its one material `material`, as a .glb
     // named `name`, loaded with the file's materials.
-    SceneDescription load_square(const Json& material, const std::string& name = "square.glb") {
+    // shared: two nodes place the square's mesh, the second 10 along x.
+    void write_square(const Json& material, const std::string& name = "square.glb", bool shared = false) {
         GltfFile file;
         const int positions = file.positions({{-4, -4, 0}, {4, -4, 0}, {4, 4, 0}, {-4, 4, 0}});
         const int indices = file.indices({0, 1, 2, 0, 2, 3}, 5125);
         file.primitive({{"attributes", {{"POSITION", positions}}}, {"indices", indices}, {"material", 0}});
         Json j = file.json("");
         j["materials"] = {material};
+        if (shared) {
+            j["nodes"].push_back({{"mesh", 0}, {"translation", {10, 0, 0}}});
+            j["scenes"][0]["nodes"] = {0, 1};
+        }
         write(name, test::glb(j.dump(), file.bin()));
+    }
+    SceneDescription load_square(const Json& material, const std::string& name = "square.glb", bool shared = false) {
+        write_square(material, name, shared);
         return load(R"({"type": "mesh_file", "file": ")" + name + R"(", "material": "from_file"})");
     }
 
@@ -98,6 +106,31 @@ TEST_F(AlphaImport, BadCutoffAndModeAreErrorsNamingFileAndMaterial) {
     EXPECT_NE(e.find("alphaMode \"CUTOUT\""), std::string::npos) << e;
     // OPAQUE ignores the cutoff, as it ignores alpha.
     EXPECT_EQ(square_material(load_square(material("OPAQUE", 1.0, 0.0))).alpha_mode, AlphaMode::opaque);
+}
+
+TEST_F(AlphaImport, SharedMaskedMeshIsPlacedFlattenedAndNamedOneRefused) {
+    // The alpha test reads the scene's own triangles' coordinates: a mesh two nodes share is
+    // placed once per node as the scene's own triangles when it is alpha-tested, by instances
+    // otherwise.
+    const SceneDescription opaque = load_square(material("OPAQUE", 1.0), "opaque.glb", true);
+    EXPECT_EQ(opaque.instances.size(), 2u);
+    const SceneDescription masked = load_square(material("MASK", 1.0), "masked.glb", true);
+    EXPECT_TRUE(masked.instances.empty());
+    std::size_t triangles = 0;
+    for (const TriangleMesh& m : masked.meshes)
+        if (masked.materials[m.material].is_alpha_tested()) triangles += m.triangles.size();
+    EXPECT_EQ(triangles, 4u);
+    // A named mesh of the scene file that is alpha-tested is refused, naming the field.
+    write_square(material("MASK", 1.0), "leaf.glb");
+    const std::string text = R"({"camera": {"eye": [-5, 0, 0], "look_at": [0, 0, 0]}, "materials": )" + std::string(kMaterials) +
+                             R"(, "meshes": {"leaf": {"type": "mesh_file", "file": "leaf.glb", "material": "from_file"}},
+                                 "shapes": [{"type": "instance", "of": "leaf", "transforms": [{"translate": [0, 0, 1]}]}]})";
+    try {
+        parse_scene_json(text, path("scene.json"));
+        ADD_FAILURE() << "an alpha-tested named mesh was placed by instances";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot be alpha-tested"), std::string::npos) << e.what();
+    }
 }
 
 TEST_F(AlphaImport, MaskedSquareShowsWhatIsBehindIt) {
