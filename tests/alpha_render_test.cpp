@@ -249,6 +249,29 @@ TEST(AlphaRender, SameBitsForEveryScheduleIsaAndWidth) {
     }
 }
 
+TEST(AlphaRender, PassesAndSplitRendersAddToTheWholeRendersBits) {
+    // BLEND's coins are functions of the rays alone: a render resumed into the same film, or
+    // split into sample ranges and merged, is the whole render's bits.
+    for (const SceneDescription& d : {card_before_wall(AlphaMode::blend, 0.5f, 0.5f, false, 11),
+                                      floor_under_card(AlphaMode::blend, 0.5f, false)}) {
+        const Scene scene = build_scene(d);
+        const Film whole = test::render_film(d, Integrator::wavefront, 2).film;
+        RenderOptions options;
+        options.threads = 3;
+        RenderSession session(scene, options);
+        Film resumed = test::film_for(scene);
+        session.render_samples(resumed, {0, 1});
+        session.render_samples(resumed, {1, d.settings.spp});
+        EXPECT_TRUE(resumed == whole);
+        Film first = test::film_for(scene), second = test::film_for(scene);
+        session.render_samples(second, {2, d.settings.spp});
+        session.render_samples(first, {0, 2});
+        EXPECT_FALSE(first == whole);
+        first.add_film(second);
+        EXPECT_TRUE(first == whole);
+    }
+}
+
 TEST(AlphaRender, AlphaTestThatKeepsEveryHitHasTheOpaqueBits) {
     // The hexroom (walls as parallelograms, spheres, a tetrahedron) with every material MASK at
     // alpha 1: the alpha kernels (one ray at a time, every candidate asked) return the hits the
