@@ -133,6 +133,22 @@ TEST_F(AlphaImport, SharedMaskedMeshIsPlacedFlattenedAndNamedOneRefused) {
     }
 }
 
+TEST_F(AlphaImport, MtlDissolveIsANoteNotAnAlphaTest) {
+    // README, Alpha: MTL's d is not mapped; below 1 it is named in the file's note, at 1 not.
+    write("m.mtl", "newmtl faded\nKd 0.5 0.5 0.5\nd 0.25\nnewmtl solid\nKd 0.5 0.5 0.5\nd 1\n");
+    write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl faded\nf 1 2 3\nusemtl solid\nf 1 3 2\n");
+    const SceneDescription d = load(R"({"type": "mesh_file", "file": "m.obj", "material": "from_file"})");
+    for (const Material& m : d.materials) EXPECT_FALSE(m.is_alpha_tested()) << m.name;
+    bool faded = false, solid = false;
+    for (const std::string& note : d.notes) {
+        if (note.find("d (dissolve) below 1") == std::string::npos) continue;
+        faded = faded || note.find("faded") != std::string::npos;
+        solid = solid || note.find("solid: d") != std::string::npos;
+    }
+    EXPECT_TRUE(faded);
+    EXPECT_FALSE(solid);
+}
+
 TEST_F(AlphaImport, MaskedSquareShowsWhatIsBehindIt) {
     // Seen from above under a constant environment of radiance 1: a square MASKed away (alpha
     // 0.3 < 0.5) shows the environment, exactly 1 in every pixel; OPAQUE with the same alpha
