@@ -87,6 +87,12 @@ TEST_F(AlphaImport, ModesCutoffAndFactorAreMapped) {
     EXPECT_EQ(opaque.alpha_mode, AlphaMode::opaque);
     EXPECT_FALSE(opaque.is_alpha_tested());
 
+    // An emitting cut-out is noted: the light samples know nothing of its holes.
+    Json glowing = material("MASK", 0.5);
+    glowing["emissiveFactor"] = {1, 1, 1};
+    EXPECT_TRUE(any_note_has(load_square(glowing), "alpha of an emitting material"));
+    EXPECT_FALSE(any_note_has(mask, "alpha of an emitting material"));
+
     // A factor outside [0, 1] is clamped, with a note.
     const SceneDescription over = load_square(material("MASK", 1.5));
     EXPECT_EQ(square_material(over).alpha_factor, 1.0f);

@@ -39,6 +39,9 @@ void map_alpha(const tinygltf::Material& m, const std::string& name, const std::
     out.material.alpha_cutoff = float(m.alphaCutoff);
     const std::vector<double>& factor = m.pbrMetallicRoughness.baseColorFactor;
     out.material.alpha_factor = factor.size() >= 4 ? fraction_from_file(factor[3], "baseColorFactor alpha", out) : 1.0f;
+    // The light table samples an emitter's whole surface: its holes would emit.
+    if (out.material.is_emissive())
+        out.unmapped.push_back("alpha of an emitting material (it emits from its cut-out parts too)");
     out.material.alpha_texture = out.material.color_texture;
     if (out.material.alpha_texture < 0 && m.pbrMetallicRoughness.baseColorTexture.index >= 0)
         out.unmapped.push_back("baseColorTexture's alpha (no base colour on this material type)");
