@@ -18,7 +18,7 @@ inline namespace WT_SIMD_ISA {
 // before instances existed (Packets: camera rays N at a time).
 template <Query Q, TriangleTest T, SphereTest S, int N, bool Packets>
 void scene_bvh_query(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
-    if (bvh.alpha_keeps) [[unlikely]]
+    if (bvh.alpha_keeps)
         alpha_bvh_query<Q, T, S, N>(bvh, rays, out);
     else if (bvh.instances)
         with_node_width(bvh, [&](auto width) { trace_instanced_rays<Q, T, S, width.value, N>(bvh, rays, out); });
