@@ -55,7 +55,8 @@ protected:
         return "";
     }
 
-    static const Material& square_material(const SceneDescription& d) { return d.materials[d.meshes.back().material]; }
+    // A copy: callers pass the temporary load_square() returns.
+    static Material square_material(const SceneDescription& d) { return d.materials[d.meshes.back().material]; }
 };
 
 // cutoff: written only if given (std::nullopt: the file leaves it out).
@@ -73,17 +74,17 @@ bool any_note_has(const SceneDescription& d, const std::string& text) {
 
 TEST_F(AlphaImport, ModesCutoffAndFactorAreMapped) {
     const SceneDescription mask = load_square(material("MASK", 0.8, 0.3));
-    const Material& m = square_material(mask);
+    const Material m = square_material(mask);
     EXPECT_EQ(m.alpha_mode, AlphaMode::mask);
     EXPECT_EQ(m.alpha_cutoff, 0.3f);
     EXPECT_EQ(m.alpha_factor, 0.8f);
     EXPECT_EQ(m.alpha_texture, -1);
     EXPECT_FALSE(any_note_has(mask, "alphaMode"));
 
-    const Material& default_cutoff = square_material(load_square(material("MASK", 0.8)));
+    const Material default_cutoff = square_material(load_square(material("MASK", 0.8)));
     EXPECT_EQ(default_cutoff.alpha_cutoff, 0.5f);  // the specification's default
     EXPECT_EQ(square_material(load_square(material("BLEND", 0.25))).alpha_mode, AlphaMode::blend);
-    const Material& opaque = square_material(load_square(material("OPAQUE", 0.0)));
+    const Material opaque = square_material(load_square(material("OPAQUE", 0.0)));
     EXPECT_EQ(opaque.alpha_mode, AlphaMode::opaque);
     EXPECT_FALSE(opaque.is_alpha_tested());
 
