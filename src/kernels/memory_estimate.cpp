@@ -80,7 +80,7 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
             options.aovs.needs_path_data(), !scene.emitter_selection.empty()));
     if (scene.light_traces_caustics) e.queues_per_worker += double(LightTracingPass::bytes_per_worker());
     const int lanes = intersect_kernels(options.isa.value_or(best_supported_isa()), s.accuracy).width;
-    if (resolve_accel(options.accel, scene.primitive_count(), lanes, !scene.instances.empty()) == Accel::bvh)
+    if (resolve_accel(options.accel, scene.primitive_count(), lanes, !scene.instances.empty() || scene.has_alpha_materials) == Accel::bvh)
         e.bvh = bvh_bytes(scene, options);
     e.geometry = geometry_bytes(scene);
     if (scene.merges_photons) e.photons = photon_batch_bytes(scene, options.photon_batch_paths);

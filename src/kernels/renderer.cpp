@@ -43,9 +43,13 @@ RenderSession::RenderSession(const Scene& scene, const RenderOptions& options)
       tiles_(make_tiles(scene.settings.width, scene.settings.height, options.tile_size)), pool_(threads_),
       kernels_(&intersect_kernels(isa_, scene.settings.accuracy)),
       counts_(std::size_t(threads_)), workspaces_(std::size_t(threads_)), sampled_pixels_(std::size_t(threads_)) {
-    accel_ = resolve_accel(options.accel, scene.primitive_count(), kernels_->width, !scene.instances.empty());
+    accel_ = resolve_accel(options.accel, scene.primitive_count(), kernels_->width,
+                           !scene.instances.empty() || scene.has_alpha_materials);
     if (accel_ != Accel::bvh && !scene.instances.empty())
         throw std::invalid_argument("render: a scene with instances is traced through its BVH only; use --accel bvh or auto");
+    if (accel_ != Accel::bvh && scene.has_alpha_materials)
+        throw std::invalid_argument("render: a scene with alpha-tested materials (alphaMode MASK or BLEND) is traced "
+                                    "through its BVH only; use --accel bvh or auto");
     if (accel_ == Accel::bvh) bvh_ = build_scene_bvh(scene, options.bvh, &pool_);
     if (scene.light_traces_caustics)
         light_tracing_ = std::make_unique<LightTracingPass>(scene, accel_ == Accel::bvh ? &bvh_.view : nullptr, threads_);

@@ -35,6 +35,8 @@ enum class MaterialType : uint8_t {
     principled,       // glTF 2.0 metallic-roughness: Lambert and GGX mixed by metallic (core/materials/principled.h)
 };
 
+enum class AlphaMode : uint8_t { opaque, mask, blend };
+
 struct Material {
     std::string name;
     MaterialType type = MaterialType::lambertian;
@@ -62,6 +64,15 @@ struct Material {
     // normal_scale; it replaces the shading normal. Triangles with texture coordinates only.
     int32_t normal_texture = -1;
     float normal_scale = 1.0f;
+    // glTF 2.0's alphaMode (3.9.4): opaque ignores alpha; mask, a hit whose alpha is below
+    // alpha_cutoff is no hit; blend, a hit is kept with probability alpha (stochastic
+    // transparency). alpha = alpha_factor times alpha_texture's alpha (the base colour texture's,
+    // glTF's baseColorTexture, or -1) at the hit's coordinates. Tested inside traversal, for
+    // every ray (core/scene/alpha_test.h).
+    AlphaMode alpha_mode = AlphaMode::opaque;
+    float alpha_factor = 1.0f;   // in [0, 1]
+    float alpha_cutoff = 0.5f;   // mask only, >= 0
+    int32_t alpha_texture = -1;
     // Set by build_scene from settings.accuracy.multiple_scattering, never by the loaders: the
     // GGX reflection lobe of a rough_conductor or principled material gets Kulla & Conty's
     // multiple-scattering lobe (core/materials/multiple_scattering.h). A conductor given by its
@@ -70,7 +81,10 @@ struct Material {
     bool multiple_scattering = false;
     glm::vec3 conductor_fresnel_average{0.0f};
 
-    bool has_textures() const { return color_texture >= 0 || metallic_roughness_texture >= 0 || normal_texture >= 0; }
+    bool has_textures() const {
+        return color_texture >= 0 || metallic_roughness_texture >= 0 || normal_texture >= 0 || alpha_texture >= 0;
+    }
+    bool is_alpha_tested() const { return alpha_mode != AlphaMode::opaque; }
     bool is_emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
     bool is_specular() const { return type >= MaterialType::mirror && type <= MaterialType::conductor; }
     // A GGX lobe: neither diffuse nor specular (light samples and BSDF samples, never connected

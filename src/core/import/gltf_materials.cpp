@@ -23,6 +23,30 @@ glm::vec3 rgb(const std::vector<double>& factor, float fallback) {
     return {float(factor[0]), float(factor[1]), float(factor[2])};
 }
 
+// glTF 2.0, 3.9.4: alphaMode OPAQUE ignores alpha; MASK cuts out where alpha (baseColorFactor's
+// fourth component times the base colour texture's alpha) is below alphaCutoff (default 0.5);
+// BLEND is rendered as stochastic transparency (core/scene/alpha_test.h). The alpha is the base
+// colour texture's: where the material has no colour for that texture (glass) it is not read.
+void map_alpha(const tinygltf::Material& m, const std::string& name, const std::string& path, ImportedMaterial& out) {
+    const std::string where = path + ": material \"" + name + "\": ";
+    if (m.alphaMode == "OPAQUE") return;
+    if (m.alphaMode == "MASK") out.material.alpha_mode = AlphaMode::mask;
+    else if (m.alphaMode == "BLEND") out.material.alpha_mode = AlphaMode::blend;
+    else throw MeshFileError(where + "alphaMode \"" + m.alphaMode + "\" is not OPAQUE, MASK or BLEND");
+    // JSON has no NaN, but a cutoff must be a number >= 0 (the specification's minimum).
+    if (!(m.alphaCutoff >= 0.0) || !std::isfinite(m.alphaCutoff))
+        throw MeshFileError(where + "alphaCutoff " + std::to_string(m.alphaCutoff) + " is not a number >= 0");
+    out.material.alpha_cutoff = float(m.alphaCutoff);
+    const std::vector<double>& factor = m.pbrMetallicRoughness.baseColorFactor;
+    out.material.alpha_factor = factor.size() >= 4 ? fraction_from_file(factor[3], "baseColorFactor alpha", out) : 1.0f;
+    // The light table samples an emitter's whole surface: its holes would emit.
+    if (out.material.is_emissive())
+        out.unmapped.push_back("alpha of an emitting material (it emits from its cut-out parts too)");
+    out.material.alpha_texture = out.material.color_texture;
+    if (out.material.alpha_texture < 0 && m.pbrMetallicRoughness.baseColorTexture.index >= 0)
+        out.unmapped.push_back("baseColorTexture's alpha (no base colour on this material type)");
+}
+
 }  // namespace
 
 ImportedMaterial map_gltf_material(const tinygltf::Material& m, const std::string& name, GltfTextures& textures) {
@@ -46,7 +70,6 @@ ImportedMaterial map_gltf_material(const tinygltf::Material& m, const std::strin
         out.material = principled_material(base, metallic, roughness, ior, glm::max(emission, glm::vec3(0.0f)));
     }
     out.material.name = m.name;
-    if (m.alphaMode != "OPAQUE") out.unmapped.push_back("alphaMode " + m.alphaMode);
 
     // A metallic-roughness texture varies metallic, which principled_material() turned into a
     // conductor at metallicFactor 1: such a material stays principled, metallic 1 times the texture.
@@ -92,6 +115,7 @@ ImportedMaterial map_gltf_material(const tinygltf::Material& m, const std::strin
     out.material.normal_scale = std::isfinite(m.normalTexture.scale) ? float(m.normalTexture.scale) : 1.0f;
     map_texture(m.occlusionTexture, false, false, "occlusionTexture");
     map_texture(m.emissiveTexture, false, true, "emissiveTexture");
+    map_alpha(m, name, textures.path(), out);
     return out;
 }
 

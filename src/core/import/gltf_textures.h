@@ -25,6 +25,7 @@ public:
     // texture (baseColor, emissive). Throws MeshFileError naming the file, the
     // material and the field ("FILE: material \"panel\": baseColorTexture: image 0 (wood.png):
     // ...") for a texture or image that does not exist, cannot be read or is too large.
+    const std::string& path() const { return path_; }
     int add(int index, const tinygltf::ExtensionMap& extensions, bool srgb, const std::string& material,
             const std::string& field);
 

@@ -109,6 +109,8 @@ ImportedMaterial map_obj_material(const tinyobj::material_t& m, const std::strin
         {m.normal_texname, "norm"}};
     for (const auto& t : unread)
         if (!t.name.empty()) out.unmapped.push_back(std::string(t.key) + " texture");
+    // Not an alpha test (README, Alpha): a glass's or a mistaken exporter's dissolve as often as a cut-out's.
+    if (m.dissolve < 1.0f) out.unmapped.push_back("d (dissolve) below 1 (rendered opaque)");
     return out;
 }
 

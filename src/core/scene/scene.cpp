@@ -164,6 +164,8 @@ Scene build_scene(const SceneDescription& description) {
     build_instances(description, scene.primitive_count(), scene.instances);
     scene.has_rough_materials = std::any_of(scene.materials.begin(), scene.materials.end(),
                                             [](const Material& m) { return m.is_microfacet(); });
+    scene.has_alpha_materials = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                            [](const Material& m) { return m.is_alpha_tested(); });
     if (textured) {
         for (const TextureImage& image : description.textures) scene.textures.emplace_back(image);
         set_camera_cone(scene, description);

@@ -55,6 +55,10 @@ struct Scene {
     // with the rough materials' light samples and pdfs only where this is set, so the other
     // scenes run the loop they ran before rough materials existed (kernels/wavefront/shade_queue.h).
     bool has_rough_materials = false;
+    // Some material is alpha-tested (glTF alphaMode MASK or BLEND): the traversal asks
+    // core/scene/alpha_test.h about every candidate hit, through the BVH (kernels/accel/
+    // alpha_filter.h). Without it the kernels never ask.
+    bool has_alpha_materials = false;
     // Image textures, indexed by Material::color_texture and the like, and the coordinates they
     // are looked up at; both empty unless some material has a texture. A textured scene shades
     // with the loop that tests materials at run time (kernels/wavefront/stage_shade.cpp), and

@@ -30,11 +30,12 @@ const char* accel_name(Accel accel);
 std::optional<Accel> parse_accel(const std::string& name);  // "auto", "bvh", "brute"
 
 // What `automatic` resolves to for a scene of `primitives` primitives traced by kernels of
-// `kernel_width` lanes. Instances are traced through their two-level BVH only: with them,
-// `automatic` is the BVH (and `brute` is refused by the renderer).
-inline Accel resolve_accel(Accel requested, uint32_t primitives, int kernel_width, bool has_instances = false) {
+// `kernel_width` lanes. Instances are traced through their two-level BVH only, and so are
+// alpha-tested materials (the alpha test is in the BVH's walk, kernels/accel/alpha_filter.h):
+// with either, `automatic` is the BVH (and `brute` is refused by the renderer).
+inline Accel resolve_accel(Accel requested, uint32_t primitives, int kernel_width, bool bvh_only = false) {
     if (requested != Accel::automatic) return requested;
-    if (has_instances) return Accel::bvh;
+    if (bvh_only) return Accel::bvh;
     return primitives < bvh_crossover(kernel_width) ? Accel::brute : Accel::bvh;
 }
 

@@ -70,9 +70,9 @@ WT_KERNEL_INLINE uint32_t enter_children(const BvhNode<W>& node, const BoxRay<V>
     return mask;
 }
 
-template <TriangleTest T, SphereTest S, Query Q, int L>
+template <TriangleTest T, SphereTest S, int L, typename State>
 WT_KERNEL_INLINE void test_leaf(const BvhView& bvh, uint32_t ref, const SingleRay<L>& ray, const TriangleRays<T, L>& tri_ray,
-                      SingleRayState<Q, L>& state) {
+                      State& state) {
     const uint32_t first = ref & kBvhFirstMask;
     const uint32_t count = ((ref >> kBvhCountShift) & 7u) + 1u;
     constexpr uint32_t rows = T == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
@@ -164,13 +164,13 @@ WT_KERNEL_INLINE void traverse_tree(const void* tree_nodes, uint32_t root, const
     }
 }
 
-template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L>
-WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, SingleRayState<Q, L>& state) {
+template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L, typename State>
+WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, State& state) {
     const SingleRay<L> ray = broadcast_ray<L>(rays, i);
     const TriangleRays<T, L> tri_ray(ray.o, ray.d);
     const BoxRay<V> box_ray(rays, i);
     traverse_tree<Q, W, V>(bvh.nodes, bvh.root, box_ray, state, [&](uint32_t ref) __attribute__((always_inline)) {
-        test_leaf<T, S, Q, L>(bvh, ref, ray, tri_ray, state);
+        test_leaf<T, S, L>(bvh, ref, ray, tri_ray, state);
     });
 }
 

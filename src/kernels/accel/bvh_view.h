@@ -49,6 +49,12 @@ constexpr uint32_t kSphereRows = 5;           // centre xyz, radius, id
 
 struct InstanceView;
 
+// Whether a candidate hit on primitive `prim` at barycentrics (u, v) counts, for a scene with
+// alpha-tested materials (core/scene/alpha_test.h: glTF's alphaMode MASK and BLEND). ray_key
+// is the ray's own bits hashed (alpha_filter.h), the random number of a BLEND coin. Compiled
+// once, outside the per-ISA kernels, so every ISA takes the same decisions.
+using AlphaKeepsHit = bool (*)(const void* context, uint32_t prim, float u, float v, uint64_t ray_key);
+
 struct BvhView {
     const void* nodes;    // BvhNode<node_width>[]
     uint32_t node_width;  // 4 or 8
@@ -59,6 +65,10 @@ struct BvhView {
     // The scene's instances (two-level traversal, instance_traverse.h), or null: a scene
     // without instances traces this tree alone, as before instances existed.
     const InstanceView* instances = nullptr;
+    // A scene with alpha-tested materials: every candidate hit is asked about first
+    // (alpha_filter.h), one ray at a time. Null otherwise, and then no kernel asks.
+    AlphaKeepsHit alpha_keeps = nullptr;
+    const void* alpha_context = nullptr;
 };
 
 // One placement as the traversal reads it: world -> object (rows of the inverse's linear part

@@ -58,9 +58,9 @@ struct IdsFrom {
 };
 
 // An instanced mesh's leaf: triangles only (build_instances stores no parallelograms or spheres).
-template <TriangleTest T, Query Q, int L>
+template <TriangleTest T, int L, typename State>
 WT_KERNEL_INLINE void test_mesh_leaf(const BvhView& mesh, uint32_t ref, const TriangleRays<T, L>& tri_ray, uint32_t first_id,
-                                     SingleRayState<Q, L>& state) {
+                                     State& state) {
     if (BvhLeafKind((ref >> kBvhKindShift) & 3u) != BvhLeafKind::triangle) return;  // kBvhEmptyChild
     const uint32_t first = ref & kBvhFirstMask;
     const uint32_t count = ((ref >> kBvhCountShift) & 7u) + 1u;
@@ -69,9 +69,9 @@ WT_KERNEL_INLINE void test_mesh_leaf(const BvhView& mesh, uint32_t ref, const Tr
     test_planar_run<Planar::triangle>(tri_ray, IdsFrom<TriangleBlock<T>>{block, int32_t(first_id)}, count, state);
 }
 
-template <TriangleTest T, Query Q, int W, int V, int L>
+template <TriangleTest T, Query Q, int W, int V, int L, typename State>
 WT_KERNEL_INLINE void trace_instance(const InstanceView& instances, const InstanceRecord& r, const RayView& rays, uint32_t i,
-                                     SingleRayState<Q, L>& state) {
+                                     State& state) {
     const ObjectRay local = object_ray(r, rays, i);
     const RayView one{&local.o[0], &local.o[1], &local.o[2], &local.d[0], &local.d[1], &local.d[2], nullptr, 1u};
     const SingleRay<L> ray = broadcast_ray<L>(one, 0);
@@ -79,12 +79,12 @@ WT_KERNEL_INLINE void trace_instance(const InstanceView& instances, const Instan
     const BoxRay<V> box_ray(one, 0);
     const BvhView& mesh = instances.meshes[r.mesh];
     traverse_tree<Q, W, V>(mesh.nodes, mesh.root, box_ray, state, [&](uint32_t ref) __attribute__((always_inline)) {
-        test_mesh_leaf<T, Q, L>(mesh, ref, tri_ray, r.first_id, state);
+        test_mesh_leaf<T, L>(mesh, ref, tri_ray, r.first_id, state);
     });
 }
 
-template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L>
-WT_KERNEL_INLINE void trace_instanced_one(const BvhView& bvh, const RayView& rays, uint32_t i, SingleRayState<Q, L>& state) {
+template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L, typename State>
+WT_KERNEL_INLINE void trace_instanced_one(const BvhView& bvh, const RayView& rays, uint32_t i, State& state) {
     trace_one<T, S, Q, W, V, L>(bvh, rays, i, state);  // the scene's own primitives
     if (state.done()) return;
     const InstanceView& instances = *bvh.instances;
@@ -103,19 +103,6 @@ void trace_instanced_rays(const BvhView& bvh, const RayView& rays, QueryOutput<Q
     for_each_ray<Q, MaxWidth>(rays, out, [&](uint32_t i, auto& state) __attribute__((always_inline)) {
         trace_instanced_one<T, S, Q, W, kNodeLanes<W, MaxWidth>, kLeafLanes<MaxWidth>>(bvh, rays, i, state);
     });
-}
-
-// The kernel table's BVH entries: a scene with instances takes the two-level walk one ray at a
-// time (also for the coherent rays the packet walk would take); one without, the walk it took
-// before instances existed (Packets: camera rays N at a time).
-template <Query Q, TriangleTest T, SphereTest S, int N, bool Packets>
-void scene_bvh_query(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
-    if (bvh.instances)
-        with_node_width(bvh, [&](auto width) { trace_instanced_rays<Q, T, S, width.value, N>(bvh, rays, out); });
-    else if constexpr (Packets)
-        bvh_packet_query<Q, T, S, N>(bvh, rays, out);
-    else
-        bvh_query<Q, T, S, N>(bvh, rays, out);
 }
 
 }  // namespace WT_SIMD_ISA

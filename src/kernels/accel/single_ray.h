@@ -176,8 +176,9 @@ struct SphereBlock {
 };
 
 // `count` planar primitives of shape P from `source` against the ray, N at a time.
-template <Planar P, TriangleTest T, Query Q, int N, typename Source>
-WT_KERNEL_INLINE void test_planar_run(const TriangleRays<T, N>& ray, const Source& source, uint32_t count, SingleRayState<Q, N>& state) {
+// `State` is a SingleRayState<Q, N>, or one that filters its candidates first (alpha_filter.h).
+template <Planar P, TriangleTest T, int N, typename Source, typename State>
+WT_KERNEL_INLINE void test_planar_run(const TriangleRays<T, N>& ray, const Source& source, uint32_t count, State& state) {
     for (uint32_t c = 0; c < count && !state.done(); c += N) {
         const int n = lanes_left<N>(count, c);
         const vbool<N> lanes = vint<N>::step() < vint<N>(n);
@@ -188,8 +189,8 @@ WT_KERNEL_INLINE void test_planar_run(const TriangleRays<T, N>& ray, const Sourc
     }
 }
 
-template <SphereTest S, Query Q, int N, typename Source>
-WT_KERNEL_INLINE void test_sphere_run(const SingleRay<N>& ray, const Source& source, uint32_t count, SingleRayState<Q, N>& state) {
+template <SphereTest S, int N, typename Source, typename State>
+WT_KERNEL_INLINE void test_sphere_run(const SingleRay<N>& ray, const Source& source, uint32_t count, State& state) {
     for (uint32_t c = 0; c < count && !state.done(); c += N) {
         const int n = lanes_left<N>(count, c);
         Vec3<N> center;

@@ -6,7 +6,7 @@
 #include "kernels/accel/brute_force.h"
 #include "kernels/accel/bvh_packet_traverse.h"
 #include "kernels/accel/bvh_traverse.h"
-#include "kernels/accel/instance_traverse.h"
+#include "kernels/accel/scene_bvh_query.h"
 #include "kernels/isa/intersect_kernels.h"
 
 namespace wt::packet {

@@ -1,0 +1,229 @@
+// glTF's alphaMode, alphaCutoff and baseColorFactor's alpha as the loader maps them (glTF 2.0,
+// 3.9.4): MASK and BLEND become alpha-tested materials, OPAQUE ignores alpha; a negative cutoff
+// or an unknown mode is an error naming the file and the material; an alpha factor outside
+// [0, 1] is clamped with a note; and a MASK square whose alpha is below its cutoff lets the
+// camera see what is behind it, where the same square OPAQUE does not.
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+#include <gtest/gtest.h>
+
+#include "core/scene_file/scene_error.h"
+#include "import_gltf_files.h"
+#include "lights_test_scenes.h"
+#include "render_helpers.h"
+
+namespace wt {
+namespace {
+
+using test::GltfFile;
+using Json = nlohmann::json;
+
+class AlphaImport : public test::ImportTest {
+protected:
+    // A square of side 8 in the z = 0 plane facing +z, its one material `material`, as a .glb
+    // named `name`, loaded with the file's materials.
+    // shared: two nodes place the square's mesh, the second 10 along x.
+    void write_square(const Json& material, const std::string& name = "square.glb", bool shared = false) {
+        GltfFile file;
+        const int positions = file.positions({{-4, -4, 0}, {4, -4, 0}, {4, 4, 0}, {-4, 4, 0}});
+        const int indices = file.indices({0, 1, 2, 0, 2, 3}, 5125);
+        file.primitive({{"attributes", {{"POSITION", positions}}}, {"indices", indices}, {"material", 0}});
+        Json j = file.json("");
+        j["materials"] = {material};
+        if (shared) {
+            j["nodes"].push_back({{"mesh", 0}, {"translation", {10, 0, 0}}});
+            j["scenes"][0]["nodes"] = {0, 1};
+        }
+        write(name, test::glb(j.dump(), file.bin()));
+    }
+    SceneDescription load_square(const Json& material, const std::string& name = "square.glb", bool shared = false) {
+        write_square(material, name, shared);
+        return load(R"({"type": "mesh_file", "file": ")" + name + R"(", "material": "from_file"})");
+    }
+
+    std::string error_for_square(const Json& material) {
+        try {
+            load_square(material);
+        } catch (const SceneError& e) {
+            return e.what();
+        }
+        ADD_FAILURE() << "no SceneError for " << material.dump();
+        return "";
+    }
+
+    // A copy: callers pass the temporary load_square() returns.
+    static Material square_material(const SceneDescription& d) { return d.materials[d.meshes.back().material]; }
+};
+
+// cutoff: written only if given (std::nullopt: the file leaves it out).
+Json material(const std::string& mode, double alpha, std::optional<double> cutoff = std::nullopt) {
+    Json m = {{"name", "leaf"}, {"alphaMode", mode}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.5, 0.5, alpha}}, {"metallicFactor", 0.0}}}};
+    if (cutoff) m["alphaCutoff"] = *cutoff;
+    return m;
+}
+
+bool any_note_has(const SceneDescription& d, const std::string& text) {
+    for (const std::string& note : d.notes)
+        if (note.find(text) != std::string::npos) return true;
+    return false;
+}
+
+TEST_F(AlphaImport, ModesCutoffAndFactorAreMapped) {
+    const SceneDescription mask = load_square(material("MASK", 0.8, 0.3));
+    const Material m = square_material(mask);
+    EXPECT_EQ(m.alpha_mode, AlphaMode::mask);
+    EXPECT_EQ(m.alpha_cutoff, 0.3f);
+    EXPECT_EQ(m.alpha_factor, 0.8f);
+    EXPECT_EQ(m.alpha_texture, -1);
+    EXPECT_FALSE(any_note_has(mask, "alphaMode"));
+
+    const Material default_cutoff = square_material(load_square(material("MASK", 0.8)));
+    EXPECT_EQ(default_cutoff.alpha_cutoff, 0.5f);  // the specification's default
+    EXPECT_EQ(square_material(load_square(material("BLEND", 0.25))).alpha_mode, AlphaMode::blend);
+    const Material opaque = square_material(load_square(material("OPAQUE", 0.0)));
+    EXPECT_EQ(opaque.alpha_mode, AlphaMode::opaque);
+    EXPECT_FALSE(opaque.is_alpha_tested());
+
+    // An emitting cut-out is noted: the light samples know nothing of its holes.
+    Json glowing = material("MASK", 0.5);
+    glowing["emissiveFactor"] = {1, 1, 1};
+    EXPECT_TRUE(any_note_has(load_square(glowing), "alpha of an emitting material"));
+    EXPECT_FALSE(any_note_has(mask, "alpha of an emitting material"));
+
+    // A factor outside [0, 1] is clamped, with a note.
+    const SceneDescription over = load_square(material("MASK", 1.5));
+    EXPECT_EQ(square_material(over).alpha_factor, 1.0f);
+    EXPECT_TRUE(any_note_has(over, "baseColorFactor alpha outside [0, 1] (clamped)"));
+}
+
+TEST_F(AlphaImport, BadCutoffAndModeAreErrorsNamingFileAndMaterial) {
+    for (const Json& bad : {material("MASK", 1.0, -0.25), material("BLEND", 1.0, -1e-30)}) {
+        const std::string e = error_for_square(bad);
+        EXPECT_NE(e.find("square.glb"), std::string::npos) << e;
+        EXPECT_NE(e.find("material \"leaf\""), std::string::npos) << e;
+        EXPECT_NE(e.find("alphaCutoff"), std::string::npos) << e;
+    }
+    const std::string e = error_for_square(material("CUTOUT", 1.0));
+    EXPECT_NE(e.find("square.glb"), std::string::npos) << e;
+    EXPECT_NE(e.find("material \"leaf\""), std::string::npos) << e;
+    EXPECT_NE(e.find("alphaMode \"CUTOUT\""), std::string::npos) << e;
+    // OPAQUE ignores the cutoff, as it ignores alpha.
+    EXPECT_EQ(square_material(load_square(material("OPAQUE", 1.0, 0.0))).alpha_mode, AlphaMode::opaque);
+}
+
+TEST_F(AlphaImport, SharedMaskedMeshIsPlacedFlattenedAndNamedOneRefused) {
+    // The alpha test reads the scene's own triangles' coordinates: a mesh two nodes share is
+    // placed once per node as the scene's own triangles when it is alpha-tested, by instances
+    // otherwise.
+    const SceneDescription opaque = load_square(material("OPAQUE", 1.0), "opaque.glb", true);
+    EXPECT_EQ(opaque.instances.size(), 2u);
+    const SceneDescription masked = load_square(material("MASK", 1.0), "masked.glb", true);
+    EXPECT_TRUE(masked.instances.empty());
+    std::size_t triangles = 0;
+    for (const TriangleMesh& m : masked.meshes)
+        if (masked.materials[m.material].is_alpha_tested()) triangles += m.triangles.size();
+    EXPECT_EQ(triangles, 4u);
+    // A named mesh of the scene file that is alpha-tested is refused, naming the field.
+    write_square(material("MASK", 1.0), "leaf.glb");
+    const std::string text = R"({"camera": {"eye": [-5, 0, 0], "look_at": [0, 0, 0]}, "materials": )" + std::string(kMaterials) +
+                             R"(, "meshes": {"leaf": {"type": "mesh_file", "file": "leaf.glb", "material": "from_file"}},
+                                 "shapes": [{"type": "instance", "of": "leaf", "transforms": [{"translate": [0, 0, 1]}]}]})";
+    try {
+        parse_scene_json(text, path("scene.json"));
+        ADD_FAILURE() << "an alpha-tested named mesh was placed by instances";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot be alpha-tested"), std::string::npos) << e.what();
+    }
+}
+
+TEST_F(AlphaImport, MtlDissolveIsANoteNotAnAlphaTest) {
+    // README, Alpha: MTL's d is not mapped; below 1 it is named in the file's note, at 1 not.
+    write("m.mtl", "newmtl faded\nKd 0.5 0.5 0.5\nd 0.25\nnewmtl solid\nKd 0.5 0.5 0.5\nd 1\n");
+    write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl faded\nf 1 2 3\nusemtl solid\nf 1 3 2\n");
+    const SceneDescription d = load(R"({"type": "mesh_file", "file": "m.obj", "material": "from_file"})");
+    for (const Material& m : d.materials) EXPECT_FALSE(m.is_alpha_tested()) << m.name;
+    bool faded = false, solid = false;
+    for (const std::string& note : d.notes) {
+        if (note.find("d (dissolve) below 1") == std::string::npos) continue;
+        faded = faded || note.find("faded") != std::string::npos;
+        solid = solid || note.find("solid: d") != std::string::npos;
+    }
+    EXPECT_TRUE(faded);
+    EXPECT_FALSE(solid);
+}
+
+TEST_F(AlphaImport, MaskedSquareShowsWhatIsBehindIt) {
+    // Seen from above under a constant environment of radiance 1: a square MASKed away (alpha
+    // 0.3 < 0.5) shows the environment, exactly 1 in every pixel; OPAQUE with the same alpha
+    // shows the square (which reflects less than 1), and so does MASK at cutoff 0.25.
+    const auto render = [&](const Json& m) {
+        SceneDescription d = load_square(m);
+        d.lights = {test::constant_environment(glm::vec3(1.0f))};
+        d.camera.eye = glm::vec3(0.0f, 0.0f, 2.0f);
+        d.camera.look_at = glm::vec3(0.0f);
+        d.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+        d.camera.fov_degrees = 40.0f;
+        d.settings.width = d.settings.height = 8;
+        d.settings.spp = 4;
+        return test::render_film(d, Integrator::wavefront).film;
+    };
+    const Film cut = render(material("MASK", 0.3));
+    const Film opaque = render(material("OPAQUE", 0.3));
+    const Film kept = render(material("MASK", 0.3, 0.25));
+    for (uint32_t p = 0; p < 64; ++p) {
+        EXPECT_EQ(cut.pixel_mean(p), glm::dvec3(1.0)) << p;
+        EXPECT_LT(opaque.pixel_mean(p).x, 0.9) << p;
+        EXPECT_EQ(kept.pixel_mean(p), opaque.pixel_mean(p)) << p;
+    }
+}
+
+TEST_F(AlphaImport, KhronosClearCoatTestsBlendCoatingFromAssimpTestModels) {
+    // The Khronos sample ClearCoatTest (Debian's assimp-testmodels): its "Partial_Coating" is a
+    // black BLEND layer over a blue base, its alpha from PartialCoating_Alpha.png (0 to 255).
+    const std::string file = "/usr/share/assimp/models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf";
+    if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " is missing: install Debian's assimp-testmodels";
+    SceneDescription d = load(R"({"type": "mesh_file", "file": ")" + file + R"(", "material": "from_file"})");
+    int coating = -1;
+    const std::string suffix = "/Partial_Coating";
+    for (std::size_t i = 0; i < d.materials.size(); ++i) {
+        const std::string& name = d.materials[i].name;
+        if (name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) coating = int(i);
+    }
+    ASSERT_GE(coating, 0);
+    const Material& m = d.materials[std::size_t(coating)];
+    EXPECT_EQ(m.alpha_mode, AlphaMode::blend);
+    ASSERT_GE(m.alpha_texture, 0);
+    EXPECT_EQ(m.alpha_texture, m.color_texture);
+    float lowest = 1.0f, highest = 0.0f;
+    for (const glm::vec4& t : d.textures[std::size_t(m.alpha_texture)].texels->rgba)
+        lowest = std::min(lowest, t.w), highest = std::max(highest, t.w);
+    EXPECT_EQ(lowest, 0.0f);
+    EXPECT_EQ(highest, 1.0f);
+
+    // Rendered from the front under a white sky: the same bits for every schedule, ISA and
+    // integrator, and another image than with the coating OPAQUE (all black where it covers).
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const TriangleMesh& mesh : d.meshes)
+        for (const glm::vec3& v : mesh.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    d.lights = {test::constant_environment(glm::vec3(1.0f))};
+    d.camera.look_at = centre;
+    d.camera.eye = centre + glm::vec3(0.0f, 0.0f, 1.2f * std::max(hi.x - lo.x, hi.y - lo.y));
+    d.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    d.camera.fov_degrees = 50.0f;
+    d.settings.width = d.settings.height = 24;
+    d.settings.spp = 2;
+    const Film film = test::render_film(d, Integrator::wavefront).film;
+    test::expect_same_film_for_any_schedule(d, film);
+    SceneDescription opaque = d;
+    opaque.materials[std::size_t(coating)].alpha_mode = AlphaMode::opaque;
+    EXPECT_FALSE(film == test::render_film(opaque, Integrator::wavefront).film);
+    for (uint32_t p = 0; p < 24u * 24u; ++p) EXPECT_TRUE(std::isfinite(film.pixel_mean(p).x)) << p;
+}
+
+}  // namespace
+}  // namespace wt
