@@ -53,6 +53,7 @@ double geometry_bytes(const Scene& scene) {
 // The textures' mip pyramids and the coordinates they are looked up at: 0 without textures.
 double texture_bytes(const Scene& scene) {
     double bytes = double(scene.texture_coordinates.bytes());
+    for (const InstancedMesh& m : scene.instances.meshes) bytes += double(m.texture_coordinates.bytes());  // each mesh once
     for (const MipPyramid& t : scene.textures) bytes += double(t.bytes());
     return bytes;
 }

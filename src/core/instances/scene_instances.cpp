@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/geometry/mesh_texture_coordinates.h"
 #include "core/instances/build_instances.h"
 
 namespace wt {
@@ -39,6 +40,8 @@ std::string instance_transform_problem(const glm::dmat4& m) {
 void build_instances(const SceneDescription& d, uint32_t first_id, SceneInstances& out) {
     if (d.instances.empty()) return;
     out.meshes.resize(d.prototypes.size());
+    // Coordinates only if some material will read them, as for the scene's own triangles.
+    const bool textured = std::any_of(d.materials.begin(), d.materials.end(), [](const Material& m) { return m.has_textures(); });
     for (std::size_t p = 0; p < d.prototypes.size(); ++p) {
         const MeshPrototype& proto = d.prototypes[p];
         InstancedMesh& mesh = out.meshes[p];
@@ -49,6 +52,10 @@ void build_instances(const SceneDescription& d, uint32_t first_id, SceneInstance
                 throw std::invalid_argument("build_scene: mesh \"" + proto.name + "\" has a part with " +
                                             std::to_string(part.normals.size()) + " normals for " +
                                             std::to_string(part.vertices.size()) + " vertices");
+            if (!part.uvs.empty() && part.uvs.size() != part.vertices.size())
+                throw std::invalid_argument("build_scene: mesh \"" + proto.name + "\" has a part with " +
+                                            std::to_string(part.uvs.size()) + " texture coordinates for " +
+                                            std::to_string(part.vertices.size()) + " vertices");
             if (d.materials[part.material].is_emissive())
                 throw std::invalid_argument("build_scene: mesh \"" + proto.name +
                                             "\" emits light; the light table holds the scene's own triangles only");
@@ -57,6 +64,7 @@ void build_instances(const SceneDescription& d, uint32_t first_id, SceneInstance
                                             "\" is alpha-tested; the alpha test reads the scene's own triangles only");
             for (const auto& tri : part.triangles) {
                 mesh.triangles.push_back(part.vertices[tri[0]], part.vertices[tri[1]], part.vertices[tri[2]], part.material);
+                if (textured) push_texture_coordinates(mesh.texture_coordinates, part, tri);
                 if (!smooth) continue;
                 if (part.normals.empty()) mesh.shading_normals.push_flat();
                 else mesh.shading_normals.push(part.normals[tri[0]], part.normals[tri[1]], part.normals[tri[2]]);

@@ -13,12 +13,14 @@
 #include "core/geometry/geometry_soa.h"
 #include "core/instances/affine_transform.h"
 #include "core/geometry/shading_normals.h"
+#include "core/textures/texture_coordinates.h"
 
 namespace wt {
 
 struct InstancedMesh {
     TriangleSoA triangles;               // object space; triangles only (no parallelograms)
     ShadingNormalTable shading_normals;  // empty unless the mesh has vertex normals
+    TextureCoordinateTable texture_coordinates;  // object space; empty unless the scene has textures
 };
 
 struct Instance {

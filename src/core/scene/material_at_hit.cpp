@@ -18,22 +18,22 @@ glm::vec2 sphere_coordinates(const glm::vec3& n) {
 }
 
 // The tangent-space normal (2 c - 1, x and y scaled) about the frame of the shading normal N and
-// the triangle's tangents made orthogonal to it (Gram-Schmidt), as glTF 2.0 (3.9.3) defines
-// normal maps. A flat texel (0.5, 0.5, 1) leaves the surface exactly as it was; so do a
+// the triangle's tangents t and b made orthogonal to it (Gram-Schmidt), as glTF 2.0 (3.9.3)
+// defines normal maps. A flat texel (0.5, 0.5, 1) leaves the surface exactly as it was; so do a
 // degenerate frame and a normal that does not come out finite.
-void apply_normal_map(const Scene& scene, const Hit& hit, const glm::vec4& texel, const Material& m, SurfacePoint& surface) {
+void apply_normal_map(const glm::vec3& t, const glm::vec3& b_triangle, const glm::vec4& texel, const Material& m,
+                      SurfacePoint& surface) {
     const float x = (2.0f * texel.x - 1.0f) * m.normal_scale, y = (2.0f * texel.y - 1.0f) * m.normal_scale;
     const float z = 2.0f * texel.z - 1.0f;
     if (x == 0.0f && y == 0.0f && z > 0.0f) return;
     const glm::vec3& n = surface.shading_normal;
-    const glm::vec3 t = scene.texture_coordinates.tangent(hit.prim);
     const glm::vec3 t_perpendicular = t - glm::dot(t, n) * n;
     const float t_length = glm::length(t_perpendicular);
     if (!(t_length > 0.0f)) return;
     const glm::vec3 tangent = t_perpendicular / t_length;
     // The bitangent's side from the triangle's own (a mirrored mapping flips it).
     const glm::vec3 b = glm::cross(n, tangent);
-    const glm::vec3 bitangent = glm::dot(b, scene.texture_coordinates.bitangent(hit.prim)) < 0.0f ? -b : b;
+    const glm::vec3 bitangent = glm::dot(b, b_triangle) < 0.0f ? -b : b;
     const glm::vec3 mapped = x * tangent + y * bitangent + z * n;
     const float length = glm::length(mapped);
     if (!(length > 1e-6f) || !std::isfinite(length)) return;
@@ -41,20 +41,55 @@ void apply_normal_map(const Scene& scene, const Hit& hit, const glm::vec4& texel
     surface.smooth = surface.shading_normal != surface.normal;
 }
 
+// Where a hit's texture coordinates are: the scene's own triangle's row, or the row of the
+// instanced mesh's triangle with the placement that takes its tangents and density into world
+// space. Spheres have none (`table` null).
+struct CoordinateRow {
+    const TextureCoordinateTable* table = nullptr;
+    std::size_t row = 0;
+    const Instance* instance = nullptr;
+    const InstancedMesh* mesh = nullptr;
+};
+
+CoordinateRow coordinate_row(const Scene& scene, const Hit& hit) {
+    CoordinateRow c;
+    if (hit.prim < scene.triangles.size()) {
+        c.table = &scene.texture_coordinates, c.row = hit.prim;
+    } else if (!scene.instances.empty() && hit.prim >= scene.instances.first_id) {
+        c.instance = &scene.instances.instance_of(hit.prim);
+        c.mesh = &scene.instances.meshes[c.instance->mesh];
+        c.table = &c.mesh->texture_coordinates, c.row = hit.prim - c.instance->first_id;
+    }
+    if (c.table && c.row >= c.table->size()) c.table = nullptr;
+    return c;
+}
+
+// 0.5 log2(texture area / world area) of the hit's triangle (TextureCoordinateTable::
+// log2_density): an instanced triangle's is its object-space density less half the log2 of how
+// much the placement scales its area.
+float log2_density(const CoordinateRow& c) {
+    const float density = c.table->log2_density(c.row);
+    if (!c.instance) return density;
+    const glm::vec3 e1 = c.mesh->triangles.edge1(uint32_t(c.row)), e2 = c.mesh->triangles.edge2(uint32_t(c.row));
+    const float object_area = glm::length(glm::cross(e1, e2));
+    const float world_area = glm::length(glm::cross(c.instance->to_world.vector(e1), c.instance->to_world.vector(e2)));
+    return object_area > 0.0f && world_area > 0.0f ? density - 0.5f * std::log2(world_area / object_area) : density;
+}
+
 }  // namespace
 
 void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, const Ray& ray, bool from_camera,
                     Material& textured) {
-    const bool triangle = hit.prim < scene.triangles.size();
-    const glm::vec2 uv = triangle ? scene.texture_coordinates.at(hit.prim, hit.u, hit.v) : sphere_coordinates(surface.normal);
+    const CoordinateRow row = coordinate_row(scene, hit);
+    const glm::vec2 uv = row.table ? row.table->at(row.row, hit.u, hit.v) : sphere_coordinates(surface.normal);
     // Level of detail of a ray cone (Akenine-Moller et al. 2019, eq. 34): the triangle's texel
     // density plus log2 of the cone's width over the cosine of its incidence, plus the
     // texture's own term (added per texture below). Spheres and non-camera rays read level 0.
     float lod = -INFINITY;
-    if (from_camera && triangle) {
+    if (from_camera && row.table) {
         const float width = scene.cone_width0 + scene.cone_spread * hit.t;
         const float cosine = std::fabs(glm::dot(ray.direction, surface.normal));
-        lod = scene.texture_coordinates.log2_density(hit.prim) + std::log2(width / cosine);
+        lod = log2_density(row) + std::log2(width / cosine);
     }
     const auto lookup = [&](int32_t texture) {
         const MipPyramid& t = scene.textures[std::size_t(texture)];
@@ -69,7 +104,12 @@ void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, c
         else if (textured.type == MaterialType::conductor || textured.type == MaterialType::rough_conductor) textured.f0 *= rgb;
         else textured.albedo *= rgb;
     }
-    if (textured.normal_texture >= 0 && triangle) apply_normal_map(scene, hit, lookup(textured.normal_texture), textured, surface);
+    if (textured.normal_texture >= 0 && row.table) {
+        // An instanced triangle's tangents are in object space; tangents move with the placement.
+        glm::vec3 t = row.table->tangent(row.row), b = row.table->bitangent(row.row);
+        if (row.instance) t = row.instance->to_world.vector(t), b = row.instance->to_world.vector(b);
+        apply_normal_map(t, b, lookup(textured.normal_texture), textured, surface);
+    }
     if (textured.metallic_roughness_texture >= 0) {
         const glm::vec4 c = lookup(textured.metallic_roughness_texture);
         textured.roughness *= c.y;

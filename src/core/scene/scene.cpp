@@ -1,5 +1,6 @@
 #include "core/scene/scene.h"
 
+#include "core/geometry/mesh_texture_coordinates.h"
 #include "core/instances/build_instances.h"
 #include "core/materials/microfacet_bsdf.h"
 #include "core/materials/multiple_scattering.h"
@@ -72,15 +73,6 @@ BoundingSphere bounding_sphere(const Scene& scene) {
     if (!(lo.x <= hi.x)) return {glm::vec3(0.0f), 1.0f};  // nothing in the scene
     const float r = 0.5f * glm::length(hi - lo);
     return {0.5f * (lo + hi), r > 0.0f && std::isfinite(r) ? r : 1.0f};
-}
-
-void push_texture_coordinates(TextureCoordinateTable& table, const TriangleMesh& mesh, const std::array<uint32_t, 3>& tri) {
-    const float area = 0.5f * glm::length(glm::cross(mesh.vertices[tri[1]] - mesh.vertices[tri[0]],
-                                                     mesh.vertices[tri[2]] - mesh.vertices[tri[0]]));
-    if (mesh.uvs.empty()) table.push({}, {}, {}, area);
-    else
-        table.push(mesh.uvs[tri[0]], mesh.uvs[tri[1]], mesh.uvs[tri[2]], area, mesh.vertices[tri[1]] - mesh.vertices[tri[0]],
-                   mesh.vertices[tri[2]] - mesh.vertices[tri[0]]);
 }
 
 // The ray cone of a camera ray (Akenine-Moller et al. 2019, section 20.3.4): a pinhole's spread
