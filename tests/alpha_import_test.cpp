@@ -115,29 +115,24 @@ TEST_F(AlphaImport, BadCutoffAndModeAreErrorsNamingFileAndMaterial) {
     EXPECT_EQ(square_material(load_square(material("OPAQUE", 1.0, 0.0))).alpha_mode, AlphaMode::opaque);
 }
 
-TEST_F(AlphaImport, SharedMaskedMeshIsPlacedFlattenedAndNamedOneRefused) {
-    // The alpha test reads the scene's own triangles' coordinates: a mesh two nodes share is
-    // placed once per node as the scene's own triangles when it is alpha-tested, by instances
-    // otherwise.
-    const SceneDescription opaque = load_square(material("OPAQUE", 1.0), "opaque.glb", true);
-    EXPECT_EQ(opaque.instances.size(), 2u);
-    const SceneDescription masked = load_square(material("MASK", 1.0), "masked.glb", true);
-    EXPECT_TRUE(masked.instances.empty());
-    std::size_t triangles = 0;
-    for (const TriangleMesh& m : masked.meshes)
-        if (masked.materials[m.material].is_alpha_tested()) triangles += m.triangles.size();
-    EXPECT_EQ(triangles, 4u);
-    // A named mesh of the scene file that is alpha-tested is refused, naming the field.
+TEST_F(AlphaImport, SharedMaskedMeshIsInstancedAndSoIsANamedOne) {
+    // The alpha test reads an instanced mesh's own coordinates: a mesh two nodes share is placed
+    // by instances whether it is alpha-tested or not.
+    for (const char* mode : {"OPAQUE", "MASK", "BLEND"}) {
+        const SceneDescription d = load_square(material(mode, 1.0), std::string(mode) + ".glb", true);
+        EXPECT_EQ(d.instances.size(), 2u) << mode;
+        ASSERT_EQ(d.prototypes.size(), 1u) << mode;
+        EXPECT_EQ(d.materials[d.prototypes[0].parts[0].material].is_alpha_tested(), std::string(mode) != "OPAQUE");
+    }
+    // A named mesh of the scene file that is alpha-tested is placed by its instance too.
     write_square(material("MASK", 1.0), "leaf.glb");
     const std::string text = R"({"camera": {"eye": [-5, 0, 0], "look_at": [0, 0, 0]}, "materials": )" + std::string(kMaterials) +
                              R"(, "meshes": {"leaf": {"type": "mesh_file", "file": "leaf.glb", "material": "from_file"}},
                                  "shapes": [{"type": "instance", "of": "leaf", "transforms": [{"translate": [0, 0, 1]}]}]})";
-    try {
-        parse_scene_json(text, path("scene.json"));
-        ADD_FAILURE() << "an alpha-tested named mesh was placed by instances";
-    } catch (const SceneError& e) {
-        EXPECT_NE(std::string(e.what()).find("cannot be alpha-tested"), std::string::npos) << e.what();
-    }
+    const SceneDescription named = parse_scene_json(text, path("scene.json"));
+    EXPECT_EQ(named.instances.size(), 1u);
+    ASSERT_EQ(named.prototypes.size(), 1u);
+    EXPECT_TRUE(named.materials[named.prototypes[0].parts[0].material].is_alpha_tested());
 }
 
 TEST_F(AlphaImport, MtlDissolveIsANoteNotAnAlphaTest) {

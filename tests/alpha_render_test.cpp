@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "core/scene/alpha_test.h"
@@ -103,6 +104,27 @@ TEST(AlphaRender, CameraRaysSeeTheWallThroughTheHole) {
             EXPECT_EQ(pixel(masked, x, y), glm::dvec3(0.0)) << x << "," << y;
             EXPECT_EQ(pixel(opaque, x, y), glm::dvec3(0.0)) << x << "," << y;
         }
+}
+
+// The card placed by an instance, turned a quarter about its normal (the hole stays in the
+// middle): the alpha test reads the instanced mesh's material and object-space coordinates.
+TEST(AlphaRender, InstancedCardShowsTheWallThroughTheHole) {
+    for (const AlphaMode mode : {AlphaMode::mask, AlphaMode::opaque}) {
+        SceneDescription d = card_before_wall(mode, 1.0f, 0.5f);
+        MeshPrototype card;
+        card.name = "card";
+        card.parts.push_back(d.meshes[0]);
+        d.meshes.erase(d.meshes.begin());
+        d.prototypes.push_back(card);
+        d.instances.push_back({0, glm::rotate(glm::dmat4(1.0), 0.5 * M_PI, glm::dvec3(0.0, 0.0, 1.0))});
+        const test::RenderedFilm r = test::render_film(d, Integrator::wavefront);
+        EXPECT_EQ(r.result.instance_count, 1u);
+        const glm::dvec3 through = mode == AlphaMode::mask ? glm::dvec3(kWall) : glm::dvec3(0.0);
+        for (int y : {7, 8})
+            for (int x : {7, 8}) EXPECT_EQ(pixel(r.film, x, y), through) << x << "," << y;
+        for (int y : {0, 15})
+            for (int x : {0, 15}) EXPECT_EQ(pixel(r.film, x, y), glm::dvec3(0.0)) << x << "," << y;
+    }
 }
 
 TEST(AlphaRender, OpaqueIgnoresAlphaEvenAtZero) {

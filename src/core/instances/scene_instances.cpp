@@ -59,9 +59,6 @@ void build_instances(const SceneDescription& d, uint32_t first_id, SceneInstance
             if (d.materials[part.material].is_emissive())
                 throw std::invalid_argument("build_scene: mesh \"" + proto.name +
                                             "\" emits light; the light table holds the scene's own triangles only");
-            if (d.materials[part.material].is_alpha_tested())
-                throw std::invalid_argument("build_scene: mesh \"" + proto.name +
-                                            "\" is alpha-tested; the alpha test reads the scene's own triangles only");
             for (const auto& tri : part.triangles) {
                 mesh.triangles.push_back(part.vertices[tri[0]], part.vertices[tri[1]], part.vertices[tri[2]], part.material);
                 if (textured) push_texture_coordinates(mesh.texture_coordinates, part, tri);

@@ -17,13 +17,23 @@ float blend_coin(uint64_t ray_key, uint32_t prim) {
 
 bool alpha_keeps_hit(const void* context, uint32_t prim, float u, float v, uint64_t ray_key) {
     const Scene& scene = *static_cast<const Scene*>(context);
-    if (prim >= scene.triangles.size()) return true;
-    const Material& m = scene.materials[scene.triangles.material[prim]];
+    // The triangle's material and coordinates: the scene's own, or its instanced mesh's (the
+    // traversal names an instanced triangle by its id in the scene, as the shade stage does).
+    const TriangleSoA* triangles = &scene.triangles;
+    const TextureCoordinateTable* coordinates = &scene.texture_coordinates;
+    uint32_t row = prim;
+    if (prim >= scene.triangles.size()) {
+        if (scene.instances.empty() || prim < scene.instances.first_id) return true;  // a sphere
+        const Instance& k = scene.instances.instance_of(prim);
+        const InstancedMesh& mesh = scene.instances.meshes[k.mesh];
+        triangles = &mesh.triangles, coordinates = &mesh.texture_coordinates, row = prim - k.first_id;
+    }
+    const Material& m = scene.materials[triangles->material[row]];
     if (!m.is_alpha_tested()) return true;
     float alpha = m.alpha_factor;
-    if (m.alpha_texture >= 0) {
+    if (m.alpha_texture >= 0 && row < coordinates->size()) {
         const MipPyramid& t = scene.textures[std::size_t(m.alpha_texture)];
-        alpha *= texture_lookup(t, t.transformed(scene.texture_coordinates.at(prim, u, v)), -INFINITY).w;
+        alpha *= texture_lookup(t, t.transformed(coordinates->at(row, u, v)), -INFINITY).w;
     }
     if (m.alpha_mode == AlphaMode::mask) return !(alpha < m.alpha_cutoff);
     return blend_coin(ray_key, prim) < alpha;

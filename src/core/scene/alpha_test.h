@@ -15,8 +15,8 @@ struct Scene;
 // cut-out. OPAQUE: always (glTF: alpha is ignored). MASK: alpha >= alpha_cutoff. BLEND: with
 // probability alpha, by a coin drawn from hash(ray_key, prim) (stochastic transparency, as
 // pbrt-v4's alpha textures between 0 and 1): the same ray meeting the same triangle always
-// decides alike, so the decision depends on nothing but the ray. Spheres and instanced
-// triangles always count (an alpha-tested shared mesh is placed flattened). `context` is the
+// decides alike, so the decision depends on nothing but the ray. An instanced triangle reads
+// its mesh's material and object-space coordinates; spheres always count. `context` is the
 // Scene, as the kernels' BvhView carries it.
 bool alpha_keeps_hit(const void* context, uint32_t prim, float u, float v, uint64_t ray_key);
 

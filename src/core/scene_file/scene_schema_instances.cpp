@@ -85,10 +85,6 @@ std::vector<NamedMeshes::Placement> NamedMeshes::read_geometry(const std::string
             in_.fail(member_path(path, "material"), "an instanced mesh cannot emit (material " + Json(m.name).dump() +
                                                         "): the light table lists the scene's own triangles; "
                                                         "place it as a shape");
-        if (m.is_alpha_tested())
-            in_.fail(member_path(path, "material"), "an instanced mesh cannot be alpha-tested (material " + Json(m.name).dump() +
-                                                        ", alphaMode MASK or BLEND): the alpha test reads the scene's "
-                                                        "own triangles' coordinates; place it as a shape");
         proto.parts.push_back(std::move(scene_.meshes[i]));
     }
     scene_.meshes.resize(first_mesh);

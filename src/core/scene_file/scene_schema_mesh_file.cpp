@@ -197,11 +197,8 @@ void read_mesh_file_shape(const Reader& in, const Json& j, const std::string& pa
         MeshPrototype proto;
         proto.name = file + "#" + std::to_string(s);
         add_parts(shared[s], proto.parts);
-        // Alpha-tested ones too: the alpha test reads the scene's own triangles' coordinates.
-        const bool emits = std::any_of(proto.parts.begin(), proto.parts.end(), [&](const TriangleMesh& p) {
-            const Material& m = scene.materials[p.material];
-            return m.is_emissive() || m.is_alpha_tested();
-        });
+        const bool emits = std::any_of(proto.parts.begin(), proto.parts.end(),
+                                       [&](const TriangleMesh& p) { return scene.materials[p.material].is_emissive(); });
         std::vector<glm::dmat4> transforms;
         for (const SharedMeshPlacement& p : placements) {
             if (p.shared != s) continue;
