@@ -157,13 +157,7 @@ TEST_F(AlphaImport, MaskedSquareShowsWhatIsBehindIt) {
     // shows the square (which reflects less than 1), and so does MASK at cutoff 0.25.
     const auto render = [&](const Json& m) {
         SceneDescription d = load_square(m);
-        d.lights = {test::constant_environment(glm::vec3(1.0f))};
-        d.camera.eye = glm::vec3(0.0f, 0.0f, 2.0f);
-        d.camera.look_at = glm::vec3(0.0f);
-        d.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
-        d.camera.fov_degrees = 40.0f;
-        d.settings.width = d.settings.height = 8;
-        d.settings.spp = 4;
+        test::view_from_above(d, 8, 4);
         return test::render_film(d, Integrator::wavefront).film;
     };
     const Film cut = render(material("MASK", 0.3));

@@ -283,10 +283,10 @@ TEST(AlphaRender, PassesAndSplitRendersAddToTheWholeRendersBits) {
         RenderSession session(scene, options);
         Film resumed = test::film_for(scene);
         session.render_samples(resumed, {0, 1});
-        session.render_samples(resumed, {1, d.settings.spp});
+        session.render_samples(resumed, {1, uint32_t(d.settings.spp)});
         EXPECT_TRUE(resumed == whole);
         Film first = test::film_for(scene), second = test::film_for(scene);
-        session.render_samples(second, {2, d.settings.spp});
+        session.render_samples(second, {2, uint32_t(d.settings.spp)});
         session.render_samples(first, {0, 2});
         EXPECT_FALSE(first == whole);
         first.add_film(second);

@@ -42,6 +42,18 @@ inline LightDescription constant_environment(glm::vec3 radiance) {
     return l;
 }
 
+// A scene in the z = 0 plane seen from 2 above, size x size pixels at `spp`, under a constant
+// environment of radiance 1 (the texture and alpha import tests' view).
+inline void view_from_above(SceneDescription& d, int size, int spp) {
+    d.lights = {constant_environment(glm::vec3(1.0f))};
+    d.camera.eye = glm::vec3(0.0f, 0.0f, 2.0f);
+    d.camera.look_at = glm::vec3(0.0f);
+    d.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    d.camera.fov_degrees = 40.0f;
+    d.settings.width = d.settings.height = size;
+    d.settings.spp = spp;
+}
+
 inline LightDescription point_light(glm::vec3 position, glm::vec3 intensity) {
     LightDescription l;
     l.type = LightType::point;

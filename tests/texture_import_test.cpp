@@ -80,22 +80,11 @@ protected:
     }
 };
 
-// The scene seen from 2 above, under a constant environment of radiance 1 (texture_render_test's view).
-void view_from_above(SceneDescription& d) {
-    d.lights = {test::constant_environment(glm::vec3(1.0f))};
-    d.camera.eye = glm::vec3(0.0f, 0.0f, 2.0f);
-    d.camera.look_at = glm::vec3(0.0f);
-    d.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
-    d.camera.fov_degrees = 40.0f;
-    d.settings.width = d.settings.height = 16;
-    d.settings.spp = 8;
-}
-
 // Seen from above, the pixels that see one half of a half-black, half-white texture alone
 // (columns 0-1 and 14-15, texture_render_test says why) have exactly the bits of the same scene
 // rendered untextured in that colour; and the image is the same for every schedule.
 void expect_halves_render_as_their_colours(SceneDescription d) {
-    view_from_above(d);
+    test::view_from_above(d, 16, 8);
     const Film film = test::render_film(d, Integrator::wavefront).film;
     for (float colour : {0.0f, 1.0f}) {
         SceneDescription plain = d;
