@@ -2,12 +2,17 @@
 // 3.9.4): MASK and BLEND become alpha-tested materials, OPAQUE ignores alpha; a negative cutoff
 // or an unknown mode is an error naming the file and the material; an alpha factor outside
 // [0, 1] is clamped with a note; and a MASK square whose alpha is below its cutoff lets the
-// camera see what is behind it, where the same square OPAQUE does not.
+// camera see what is behind it, where the same square OPAQUE does not. MTL's dissolve: d as
+// BLEND's alpha (not on glass), map_d's coverage from a grey image's value, an RGBA image's alpha
+// or the channel -imfchan names, and a masked OBJ square cut where its mask is black.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <optional>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -53,6 +58,14 @@ protected:
         }
         ADD_FAILURE() << "no SceneError for " << material.dump();
         return "";
+    }
+
+    // An MTL file of the given text and an OBJ square of side 2 in the z = 0 plane facing +z,
+    // its coordinates u = 0 at x = -1 and 1 at x = +1, using material `use`.
+    void write_obj_square(const std::string& mtl, const std::string& use) {
+        write("m.mtl", mtl);
+        write("m.obj", "mtllib m.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl " + use +
+                           "\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
     }
 
     // A copy: callers pass the temporary load_square() returns.
@@ -135,20 +148,140 @@ TEST_F(AlphaImport, SharedMaskedMeshIsInstancedAndSoIsANamedOne) {
     EXPECT_TRUE(named.materials[named.prototypes[0].parts[0].material].is_alpha_tested());
 }
 
-TEST_F(AlphaImport, MtlDissolveIsANoteNotAnAlphaTest) {
-    // README, Alpha: MTL's d is not mapped; below 1 it is named in the file's note, at 1 not.
-    write("m.mtl", "newmtl faded\nKd 0.5 0.5 0.5\nd 0.25\nnewmtl solid\nKd 0.5 0.5 0.5\nd 1\n");
-    write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl faded\nf 1 2 3\nusemtl solid\nf 1 3 2\n");
+// A binary PGM (one grey channel) or an uncompressed 32-bit TGA (RGBA, top row first) of width
+// x height whose value at column x is value(x): files with and without an alpha channel,
+// written without the image module so the test shares no code with what it tests.
+std::string pgm(int width, int height, const std::function<uint8_t(int)>& value) {
+    std::string bytes = "P5\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) bytes.push_back(char(value(x)));
+    return bytes;
+}
+std::string tga_rgba(int width, int height, const std::function<std::array<uint8_t, 4>(int)>& rgba) {
+    std::string bytes(18, '\0');
+    bytes[2] = 2;  // uncompressed true colour
+    bytes[12] = char(width & 0xff), bytes[13] = char(width >> 8), bytes[14] = char(height & 0xff), bytes[15] = char(height >> 8);
+    bytes[16] = 32, bytes[17] = 0x28;  // 8 alpha bits, top row first
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::array<uint8_t, 4> c = rgba(x);
+            for (int i : {2, 1, 0, 3}) bytes.push_back(char(c[std::size_t(i)]));  // BGRA
+        }
+    return bytes;
+}
+
+const Material& material_named(const SceneDescription& d, const std::string& suffix) {
+    for (const Material& m : d.materials)
+        if (m.name.size() >= suffix.size() && m.name.compare(m.name.size() - suffix.size(), suffix.size(), suffix) == 0) return m;
+    throw std::runtime_error("test bug: no material " + suffix);
+}
+
+TEST_F(AlphaImport, MtlDissolveIsStochasticTransparencyButOnGlass) {
+    // README, Alpha: d below 1 is alpha d, rendered as BLEND; d 1 (and no d) stays opaque; a
+    // glass's d is its exporter's note of the glass and stays a note; d 0 is followed and noted.
+    write_obj_square(
+                     "newmtl faded\nKd 0.5 0.5 0.5\nd 0.25\nnewmtl solid\nKd 0.5 0.5 0.5\nd 1\nnewmtl plain\nKd 0.5 0.5 0.5\n"
+                     "newmtl window\nillum 4\nNi 1.5\nd 0.5\nnewmtl gone\nKd 0.5 0.5 0.5\nd 0\nnewmtl mirror\nillum 3\nKs 1 1 1\nd 0.5\n",
+                     "faded");
     const SceneDescription d = load(R"({"type": "mesh_file", "file": "m.obj", "material": "from_file"})");
-    for (const Material& m : d.materials) EXPECT_FALSE(m.is_alpha_tested()) << m.name;
-    bool faded = false, solid = false;
+    EXPECT_EQ(material_named(d, "faded").alpha_mode, AlphaMode::blend);
+    EXPECT_EQ(material_named(d, "faded").alpha_factor, 0.25f);
+    EXPECT_EQ(material_named(d, "faded").alpha_texture, -1);
+    EXPECT_EQ(material_named(d, "mirror").alpha_mode, AlphaMode::blend);
+    EXPECT_EQ(material_named(d, "mirror").alpha_factor, 0.5f);
+    EXPECT_EQ(material_named(d, "gone").alpha_mode, AlphaMode::blend);
+    EXPECT_EQ(material_named(d, "gone").alpha_factor, 0.0f);
+    for (const char* opaque : {"solid", "plain", "window"}) EXPECT_FALSE(material_named(d, opaque).is_alpha_tested()) << opaque;
+    EXPECT_EQ(material_named(d, "window").type, MaterialType::glass);
+    bool window = false, gone = false, faded = false;
     for (const std::string& note : d.notes) {
-        if (note.find("d (dissolve) below 1") == std::string::npos) continue;
-        faded = faded || note.find("faded") != std::string::npos;
-        solid = solid || note.find("solid: d") != std::string::npos;
+        window = window || (note.find("window: d (dissolve) on a refracting material") != std::string::npos);
+        gone = gone || (note.find("gone: d 0: the material is invisible") != std::string::npos);
+        faded = faded || (note.find("faded:") != std::string::npos);
     }
-    EXPECT_TRUE(faded);
-    EXPECT_FALSE(solid);
+    EXPECT_TRUE(window);
+    EXPECT_TRUE(gone);
+    EXPECT_FALSE(faded);  // mapped, so not named
+}
+
+TEST_F(AlphaImport, MtlMapDReadsAlphaOrLuminanceOrTheNamedChannel) {
+    // A grey image's value, an RGBA image's alpha (not its grey colour), the red channel where
+    // -imfchan r names it, each times d; a missing file is an error naming the OBJ file, the
+    // material, map_d and the image.
+    write("grey.pgm", pgm(4, 2, [](int x) { return uint8_t(x * 85); }));
+    write("rgba.tga", tga_rgba(4, 2, [](int x) { return std::array<uint8_t, 4>{255, 255, uint8_t(51 * x), uint8_t(255 - 85 * x)}; }));
+    write_obj_square(
+                     "newmtl grey\nKd 1 1 1\nmap_d grey.pgm\nnewmtl rgba\nKd 1 1 1\nd 0.5\nmap_d rgba.tga\n"
+                     "newmtl blue\nKd 1 1 1\nmap_d -imfchan b rgba.tga\nnewmtl coloured\nKd 1 1 1\nmap_Kd rgba.tga\n",
+                     "grey");
+    const SceneDescription d = load(R"({"type": "mesh_file", "file": "m.obj", "material": "from_file"})");
+    const auto alphas = [&](const std::string& name) {
+        const Material& m = material_named(d, name);
+        EXPECT_EQ(m.alpha_mode, AlphaMode::blend) << name;
+        std::vector<float> row;
+        if (m.alpha_texture < 0) return row;
+        EXPECT_NE(m.alpha_texture, m.color_texture) << name;
+        const TextureImage& t = d.textures[std::size_t(m.alpha_texture)];
+        EXPECT_FALSE(t.srgb) << name;
+        for (int x = 0; x < 4; ++x) row.push_back(t.texels->rgba[std::size_t(x)].w);
+        return row;
+    };
+    // 8-bit values / 255, whichever way the reader rounds that quotient.
+    const auto expect_values = [&](const std::string& name, const std::vector<int>& bytes) {
+        const std::vector<float> got = alphas(name);
+        ASSERT_EQ(got.size(), bytes.size()) << name;
+        for (std::size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], bytes[i] / 255.0f, 1e-6f) << name << " " << i;
+    };
+    expect_values("grey", {0, 85, 170, 255});
+    expect_values("rgba", {255, 170, 85, 0});
+    expect_values("blue", {0, 51, 102, 153});
+    EXPECT_EQ(material_named(d, "grey").alpha_factor, 1.0f);
+    EXPECT_EQ(material_named(d, "rgba").alpha_factor, 0.5f);
+    // The colour as the file stores it, not premultiplied by its alpha (OpenImageIO's default
+    // for TGA and PNG): blue 0.6 where alpha is 0, as the blue coverage above reads it too.
+    const Material& coloured = material_named(d, "coloured");
+    ASSERT_GE(coloured.color_texture, 0);
+    const glm::vec4 texel = d.textures[std::size_t(coloured.color_texture)].texels->rgba[3];
+    EXPECT_NEAR(texel.z, 153 / 255.0f, 1e-6f);
+    EXPECT_EQ(texel.w, 0.0f);
+
+    write_obj_square("newmtl leaf\nKd 1 1 1\nmap_d nowhere.png\n", "leaf");
+    try {
+        load(R"({"type": "mesh_file", "file": "m.obj", "material": "from_file"})");
+        ADD_FAILURE() << "a missing map_d loaded";
+    } catch (const SceneError& e) {
+        const std::string message = e.what();
+        for (const char* part : {"m.obj", "material \"leaf\"", "map_d", "nowhere.png"})
+            EXPECT_NE(message.find(part), std::string::npos) << part << " not in: " << message;
+    }
+}
+
+TEST_F(AlphaImport, MtlMapDCutsTheSquareWhereItsMaskIsBlack) {
+    // Seen from above under a constant environment of radiance 1, the square (u from 0.32 to 0.68
+    // in view) with a mask black in its left half and white in its right: the two left columns
+    // show the environment, exactly 1, where the opaque square does not; the two right columns
+    // are the opaque square's bits (coverage 1 keeps every hit).
+    const std::string mtl = "newmtl masked\nKd 0.5 0.5 0.5\nmap_d mask.pgm\nnewmtl opaque\nKd 0.5 0.5 0.5\n";
+    write("mask.pgm", pgm(8, 8, [](int x) { return uint8_t(x < 4 ? 0 : 255); }));
+    const auto render = [&](const std::string& use) {
+        write_obj_square(mtl, use);
+        SceneDescription d = load(R"({"type": "mesh_file", "file": "m.obj", "material": "from_file"})");
+        test::view_from_above(d, 8, 16);
+        return test::render_film(d, Integrator::wavefront).film;
+    };
+    const Film masked = render("masked"), opaque = render("opaque");
+    double opaque_left = 0.0;
+    for (uint32_t y = 0; y < 8; ++y) {
+        for (uint32_t x : {0u, 1u}) {
+            EXPECT_EQ(masked.pixel_mean(y * 8 + x), glm::dvec3(1.0)) << x << ", " << y;
+            EXPECT_NE(opaque.pixel_mean(y * 8 + x), glm::dvec3(1.0)) << x << ", " << y;
+            opaque_left += opaque.pixel_mean(y * 8 + x).x / 16.0;
+        }
+        for (uint32_t x : {6u, 7u}) EXPECT_EQ(masked.pixel_mean(y * 8 + x), opaque.pixel_mean(y * 8 + x)) << x << ", " << y;
+    }
+    // The square's albedo 0.5 under radiance 1 reflects 0.5; 16 pixels of 16 samples each are
+    // within 0.3 of that by many of their standard deviations.
+    EXPECT_LT(opaque_left, 0.8);
 }
 
 TEST_F(AlphaImport, MaskedSquareShowsWhatIsBehindIt) {

@@ -110,7 +110,17 @@ int read_image_source(const WtImageSource* source, WtReadImage* image, char* err
             return 1;
         }
         OIIO::Filesystem::IOMemReader memory(source->bytes, source->bytes ? source->size : 0);
-        auto in = OIIO::ImageInput::open(reader_name, nullptr, source->bytes ? &memory : nullptr);
+        // The texels as the file stores them. OpenImageIO associates (premultiplies) the colour of
+        // PNG, TGA and TIFF files with their alpha unless told not to, but those formats store it
+        // unassociated, and glTF 2.0's base colour (3.9.2) and MTL's maps mean it so: a leaf's
+        // green would darken towards its cut-out edges, where alpha falls. EXR stores associated
+        // colour, which this leaves as it is.
+        // (With a configuration, OpenImageIO 2.4 reads bytes in memory only if it names them too.)
+        OIIO::ImageSpec config;
+        config.attribute("oiio:UnassociatedAlpha", 1);
+        OIIO::Filesystem::IOProxy* proxy = source->bytes ? &memory : nullptr;
+        if (proxy) config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        auto in = OIIO::ImageInput::open(reader_name, &config, proxy);
         if (!in) {
             set_error(error, error_size, path + ": cannot read the image: " + OIIO::geterror());
             return 1;

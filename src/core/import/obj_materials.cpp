@@ -1,5 +1,6 @@
 #include "core/import/obj_materials.h"
 
+#include <optional>
 #include <sstream>
 
 #include <cmath>
@@ -38,19 +39,76 @@ float roughness_from_phong_exponent(float ns) {
     return 1.0f - std::sqrt(clamped / 1000.0f);
 }
 
+// map_d's -imfchan: r, g, b and l name the channel; tinyobjloader writes m (matte) where the
+// file names none, which is read_coverage_texture_file's automatic choice.
+std::optional<CoverageChannel> coverage_channel(char imfchan) {
+    switch (imfchan) {
+        case 'm': return CoverageChannel::automatic;
+        case 'r': return CoverageChannel::red;
+        case 'g': return CoverageChannel::green;
+        case 'b': return CoverageChannel::blue;
+        case 'l': return CoverageChannel::luminance;
+        default: return std::nullopt;  // z (depth) has no meaning for coverage
+    }
+}
+
+// MTL's dissolve as alpha: d times map_d's coverage (the specification multiplies them),
+// rendered as glTF's BLEND is, stochastic transparency (core/scene/alpha_test.h). That is how
+// Blender's importer sets such a material up (blend mode BLEND, map_d into the BSDF's alpha), so
+// Cycles renders the same file the same way: the leaves and chains of Sponza-like scenes come
+// out cut, and a d 0.3 window lets 70 % of the light through. A refracting material (illum 4, 6,
+// 7) is transparent by its own glass; there d is the exporter's note of that, not a cut-out.
+void map_dissolve(const tinyobj::material_t& m, const std::string& obj_path, ObjTextures& textures, ImportedMaterial& out) {
+    const bool has_map = !m.alpha_texname.empty();
+    // A NaN d (tinyobjloader's parser makes none) reads as 1, since it is not below 1.
+    const bool partial = m.dissolve < 1.0f;
+    if (!partial && !has_map) return;
+    if (out.material.type == MaterialType::glass || out.material.type == MaterialType::rough_glass) {
+        out.unmapped.push_back(std::string(has_map ? "map_d" : "d (dissolve)") + " on a refracting material (illum 4, 6 or 7: its glass is its transparency)");
+        return;
+    }
+    out.material.alpha_mode = AlphaMode::blend;
+    out.material.alpha_factor = partial ? fraction_from_file(m.dissolve, "d", out) : 1.0f;
+    if (has_map) {
+        std::optional<CoverageChannel> channel = coverage_channel(m.alpha_texopt.imfchan);
+        if (!channel) {
+            out.unmapped.push_back(std::string("map_d -imfchan ") + m.alpha_texopt.imfchan + " (its default channel read)");
+            channel = CoverageChannel::automatic;
+        }
+        try {
+            out.material.alpha_texture = textures.add_coverage(m.alpha_texname, *channel);
+        } catch (const ImageError& e) {
+            throw MeshFileError(obj_path + ": material \"" + m.name + "\": map_d: " + e.what());
+        }
+    } else if (out.material.alpha_factor == 0.0f) {
+        // Followed, as Blender and Cycles follow it, but said: exporters that write Tr where they
+        // mean d (some write Tr 1 for opaque) make whole objects vanish this way.
+        out.unmapped.push_back("d 0: the material is invisible (an opaque one is d 1; Tr is 1 - d)");
+    }
+    if (out.material.is_emissive()) out.unmapped.push_back("dissolve of an emitting material (it emits from its transparent parts too)");
+}
+
 }  // namespace
 
-int ObjTextures::add_color(const std::string& file) {
+int ObjTextures::add_color(const std::string& file) { return add(file, std::nullopt); }
+int ObjTextures::add_coverage(const std::string& file, CoverageChannel channel) { return add(file, channel); }
+
+int ObjTextures::add(const std::string& file, Use use) {
     if (!read_) return -1;
     const std::filesystem::path relative(file);
     const std::string resolved = relative.is_absolute() ? file : (base_dir_ / relative).string();
-    if (const auto it = index_of_.find(resolved); it != index_of_.end()) return it->second;
+    if (const auto it = index_of_.find({resolved, use}); it != index_of_.end()) return it->second;
     TextureImage image;
     image.name = resolved;
-    image.srgb = colour_file_is_srgb(resolved);
-    image.texels = read_texture_file(resolved);
+    if (!use) {
+        image.srgb = colour_file_is_srgb(resolved);
+        image.texels = read_texture_file(resolved);
+    } else {
+        image.srgb = false;  // coverage is data (and the alpha test reads alpha, never decoded)
+        image.texels = read_coverage_texture_file(resolved, *use);
+    }
     out_.push_back(std::move(image));
-    return index_of_[resolved] = int(out_.size() - 1);
+    return index_of_[{resolved, use}] = int(out_.size() - 1);
 }
 
 ImportedMaterial map_obj_material(const tinyobj::material_t& m, const std::string& obj_path, ObjTextures& textures) {
@@ -104,13 +162,12 @@ ImportedMaterial map_obj_material(const tinyobj::material_t& m, const std::strin
     const struct { std::string name; const char* key; } unread[] = {
         {m.ambient_texname, "map_Ka"},   {maps_kd ? std::string() : m.diffuse_texname, "map_Kd"},     {m.specular_texname, "map_Ks"},
         {m.specular_highlight_texname, "map_Ns"}, {m.bump_texname, "bump"}, {m.displacement_texname, "disp"},
-        {m.alpha_texname, "map_d"},      {m.reflection_texname, "refl"},    {m.roughness_texname, "map_Pr"},
+        {m.reflection_texname, "refl"},    {m.roughness_texname, "map_Pr"},
         {m.metallic_texname, "map_Pm"},  {m.sheen_texname, "map_Ps"},       {m.emissive_texname, "map_Ke"},
         {m.normal_texname, "norm"}};
     for (const auto& t : unread)
         if (!t.name.empty()) out.unmapped.push_back(std::string(t.key) + " texture");
-    // Not an alpha test (README, Alpha): a glass's or a mistaken exporter's dissolve as often as a cut-out's.
-    if (m.dissolve < 1.0f) out.unmapped.push_back("d (dissolve) below 1 (rendered opaque)");
+    map_dissolve(m, obj_path, textures, out);
     return out;
 }
 

@@ -3,12 +3,14 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <tiny_obj_loader.h>
 
 #include "core/import/imported_mesh.h"
+#include "core/textures/texture_file.h"
 
 namespace wt {
 
@@ -31,11 +33,18 @@ public:
         : base_dir_(base_dir), out_(out), read_(read) {}
     // Index in `out` of a colour texture of `file` (-1 if not `read`); throws ImageError naming the file.
     int add_color(const std::string& file);
+    // Index in `out` of `file`'s `channel` read as coverage for the alpha test
+    // (read_coverage_texture_file); -1 if not `read`; throws ImageError naming the file.
+    int add_coverage(const std::string& file, CoverageChannel channel);
 
 private:
+    // What a file is read as: colour, or coverage from one of its channels.
+    using Use = std::optional<CoverageChannel>;
+    int add(const std::string& file, Use use);
+
     std::filesystem::path base_dir_;
     std::vector<TextureImage>& out_;
-    std::map<std::string, int> index_of_;
+    std::map<std::pair<std::string, Use>, int> index_of_;  // a file used both ways is two textures
     bool read_;
 };
 

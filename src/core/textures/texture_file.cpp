@@ -1,5 +1,6 @@
 #include "core/textures/texture_file.h"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 
@@ -22,6 +23,26 @@ std::shared_ptr<const TextureTexels> texels_of(const ImageData& image) {
 
 std::shared_ptr<const TextureTexels> read_texture_file(const std::string& path) {
     return texels_of(read_image(path, ImageLimits{kMaxTexturePixels, kMaxTextureSide}));
+}
+
+std::shared_ptr<const TextureTexels> read_coverage_texture_file(const std::string& path, CoverageChannel channel) {
+    const ImageData image = read_image(path, ImageLimits{kMaxTexturePixels, kMaxTextureSide});
+    std::shared_ptr<const TextureTexels> texels = texels_of(image);
+    const std::size_t n = image.channels.size();
+    if (channel == CoverageChannel::automatic) {
+        if (n == 2 || n >= 4) return texels;
+        channel = CoverageChannel::luminance;
+    }
+    auto coverage = std::make_shared<TextureTexels>(*texels);
+    for (glm::vec4& c : coverage->rgba) {
+        switch (channel) {
+            case CoverageChannel::red: c.w = c.x; break;
+            case CoverageChannel::green: c.w = c.y; break;
+            case CoverageChannel::blue: c.w = c.z; break;
+            default: c.w = n <= 2 ? c.x : std::min(0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z, 1.0f); break;
+        }
+    }
+    return coverage;
 }
 
 bool colour_file_is_srgb(const std::string& path) {
