@@ -20,6 +20,7 @@
 #include "import_gltf_files.h"
 #include "lights_test_scenes.h"
 #include "render_helpers.h"
+#include "test_image_files.h"
 
 namespace wt {
 namespace {
@@ -148,28 +149,6 @@ TEST_F(AlphaImport, SharedMaskedMeshIsInstancedAndSoIsANamedOne) {
     EXPECT_TRUE(named.materials[named.prototypes[0].parts[0].material].is_alpha_tested());
 }
 
-// A binary PGM (one grey channel) or an uncompressed 32-bit TGA (RGBA, top row first) of width
-// x height whose value at column x is value(x): files with and without an alpha channel,
-// written without the image module so the test shares no code with what it tests.
-std::string pgm(int width, int height, const std::function<uint8_t(int)>& value) {
-    std::string bytes = "P5\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) bytes.push_back(char(value(x)));
-    return bytes;
-}
-std::string tga_rgba(int width, int height, const std::function<std::array<uint8_t, 4>(int)>& rgba) {
-    std::string bytes(18, '\0');
-    bytes[2] = 2;  // uncompressed true colour
-    bytes[12] = char(width & 0xff), bytes[13] = char(width >> 8), bytes[14] = char(height & 0xff), bytes[15] = char(height >> 8);
-    bytes[16] = 32, bytes[17] = 0x28;  // 8 alpha bits, top row first
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const std::array<uint8_t, 4> c = rgba(x);
-            for (int i : {2, 1, 0, 3}) bytes.push_back(char(c[std::size_t(i)]));  // BGRA
-        }
-    return bytes;
-}
-
 const Material& material_named(const SceneDescription& d, const std::string& suffix) {
     for (const Material& m : d.materials)
         if (m.name.size() >= suffix.size() && m.name.compare(m.name.size() - suffix.size(), suffix.size(), suffix) == 0) return m;
@@ -208,8 +187,8 @@ TEST_F(AlphaImport, MtlMapDReadsAlphaOrLuminanceOrTheNamedChannel) {
     // A grey image's value, an RGBA image's alpha (not its grey colour), the red channel where
     // -imfchan r names it, each times d; a missing file is an error naming the OBJ file, the
     // material, map_d and the image.
-    write("grey.pgm", pgm(4, 2, [](int x) { return uint8_t(x * 85); }));
-    write("rgba.tga", tga_rgba(4, 2, [](int x) { return std::array<uint8_t, 4>{255, 255, uint8_t(51 * x), uint8_t(255 - 85 * x)}; }));
+    write("grey.pgm", test::pgm(4, 2, [](int x) { return uint8_t(x * 85); }));
+    write("rgba.tga", test::tga_rgba(4, 2, [](int x) { return std::array<uint8_t, 4>{255, 255, uint8_t(51 * x), uint8_t(255 - 85 * x)}; }));
     write_obj_square(
                      "newmtl grey\nKd 1 1 1\nmap_d grey.pgm\nnewmtl rgba\nKd 1 1 1\nd 0.5\nmap_d rgba.tga\n"
                      "newmtl blue\nKd 1 1 1\nmap_d -imfchan b rgba.tga\nnewmtl coloured\nKd 1 1 1\nmap_Kd rgba.tga\n",
@@ -262,7 +241,7 @@ TEST_F(AlphaImport, MtlMapDCutsTheSquareWhereItsMaskIsBlack) {
     // show the environment, exactly 1, where the opaque square does not; the two right columns
     // are the opaque square's bits (coverage 1 keeps every hit).
     const std::string mtl = "newmtl masked\nKd 0.5 0.5 0.5\nmap_d mask.pgm\nnewmtl opaque\nKd 0.5 0.5 0.5\n";
-    write("mask.pgm", pgm(8, 8, [](int x) { return uint8_t(x < 4 ? 0 : 255); }));
+    write("mask.pgm", test::pgm(8, 8, [](int x) { return uint8_t(x < 4 ? 0 : 255); }));
     const auto render = [&](const std::string& use) {
         write_obj_square(mtl, use);
         SceneDescription d = load(R"({"type": "mesh_file", "file": "m.obj", "material": "from_file"})");

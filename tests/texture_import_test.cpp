@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 #include "import_gltf_files.h"
 #include "lights_test_scenes.h"
 #include "render_helpers.h"
+#include "test_image_files.h"
 
 namespace wt {
 namespace {
@@ -245,6 +247,70 @@ TEST_F(TextureImport, ObjMapKdAndTextureCoordinates) {
     const std::string message = texture_error("broken.obj");
     test::expect_mesh_error(message, "broken.obj", "material \"panel\": map_Kd: ");
     EXPECT_NE(message.find("nowhere.png"), std::string::npos) << message;
+}
+
+TEST_F(TextureImport, ObjPbrMapsMakeTheMetallicRoughnessLayout) {
+    // map_Pr and map_Pm (grey images, read by their value) become one texture laid out as glTF's:
+    // roughness green, metallic blue; each map replaces its value (factor 1, so Pm 0.3 is not
+    // read) and keeps the material principled; a missing map's channel is 1; maps of different
+    // sizes are an error naming both files; a mirror's map_Pr is a note.
+    write("rough.pgm", test::pgm(4, 2, [](int x) { return uint8_t(85 * x); }));
+    write("metal.pgm", test::pgm(4, 2, [](int x) { return uint8_t(255 - 85 * x); }));
+    write("small.pgm", test::pgm(2, 2, [](int) { return uint8_t(255); }));
+    write("m.mtl", "newmtl both\nKd 1 1 1\nPm 0.3\nmap_Pr rough.pgm\nmap_Pm metal.pgm\n"
+                   "newmtl rough_metal\nKd 1 1 1\nPm 1\nmap_Pr rough.pgm\n"
+                   "newmtl shiny\nillum 3\nKs 1 1 1\nmap_Pr rough.pgm\n");
+    write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl both\nf 1/1 2/1 3/1\n"
+                   "usemtl rough_metal\nf 1/1 3/1 2/1\nusemtl shiny\nf 2/1 1/1 3/1\n");
+    const SceneDescription d = load_from_file("m.obj");
+    const auto named = [&](const std::string& suffix) -> const Material& {
+        for (const Material& m : d.materials)
+            if (m.name.size() >= suffix.size() && m.name.compare(m.name.size() - suffix.size(), suffix.size(), suffix) == 0) return m;
+        throw std::runtime_error("test bug: no material " + suffix);
+    };
+    const auto layout = [&](const Material& m) {
+        std::vector<glm::vec4> row;
+        if (m.metallic_roughness_texture < 0) return row;
+        const TextureImage& t = d.textures[std::size_t(m.metallic_roughness_texture)];
+        EXPECT_FALSE(t.srgb) << m.name;
+        for (int x = 0; x < 4; ++x) row.push_back(t.texels->rgba[std::size_t(x)]);
+        return row;
+    };
+    const Material& both = named("both");
+    EXPECT_EQ(both.type, MaterialType::principled);
+    EXPECT_EQ(both.metallic, 1.0f);
+    EXPECT_EQ(both.roughness, 1.0f);
+    const std::vector<glm::vec4> both_row = layout(both);
+    ASSERT_EQ(both_row.size(), 4u);
+    for (int x = 0; x < 4; ++x) {
+        EXPECT_NEAR(both_row[std::size_t(x)].y, 85 * x / 255.0f, 1e-6f) << x;
+        EXPECT_NEAR(both_row[std::size_t(x)].z, (255 - 85 * x) / 255.0f, 1e-6f) << x;
+    }
+    const Material& rough_metal = named("rough_metal");
+    EXPECT_EQ(rough_metal.type, MaterialType::principled);  // Pm 1 alone would be a conductor
+    EXPECT_EQ(rough_metal.metallic, 1.0f);
+    const std::vector<glm::vec4> rough_row = layout(rough_metal);
+    ASSERT_EQ(rough_row.size(), 4u);
+    for (int x = 0; x < 4; ++x) {
+        EXPECT_NEAR(rough_row[std::size_t(x)].y, 85 * x / 255.0f, 1e-6f) << x;
+        EXPECT_EQ(rough_row[std::size_t(x)].z, 1.0f) << x;
+    }
+    EXPECT_EQ(named("shiny").type, MaterialType::mirror);
+    EXPECT_EQ(named("shiny").metallic_roughness_texture, -1);
+    bool shiny_note = false;
+    for (const std::string& note : d.notes) {
+        EXPECT_EQ(note.find("both:"), std::string::npos) << note;
+        EXPECT_EQ(note.find("rough_metal:"), std::string::npos) << note;
+        shiny_note = shiny_note || (note.find("shiny") != std::string::npos && note.find("map_Pr texture") != std::string::npos);
+    }
+    EXPECT_TRUE(shiny_note);
+
+    write("odd.mtl", "newmtl odd\nKd 1 1 1\nmap_Pr rough.pgm\nmap_Pm small.pgm\n");
+    write("odd.obj", "mtllib odd.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl odd\nf 1/1 2/1 3/1\n");
+    const std::string message = texture_error("odd.obj");
+    test::expect_mesh_error(message, "odd.obj", "material \"odd\": map_Pr and map_Pm: ");
+    for (const char* part : {"rough.pgm (4 x 2)", "small.pgm (2 x 2)", "differ in size"})
+        EXPECT_NE(message.find(part), std::string::npos) << part << " not in: " << message;
 }
 
 TEST_F(TextureImport, SceneFileAlbedoTextureOnAQuad) {

@@ -66,25 +66,14 @@ ImportedMaterial map_gltf_material(const tinygltf::Material& m, const std::strin
         if (transmission < 1.0) out.unmapped.push_back("transmissionFactor < 1 (rendered as fully transmitting glass)");
         emission_from_file(emission, "emissiveFactor", out);
     } else {
+        // A metallic-roughness texture varies metallic: such a material stays principled at
+        // metallicFactor 1, metallic 1 times the texture.
         const float metallic = fraction_from_file(pbr.metallicFactor, "metallicFactor", out);
-        out.material = principled_material(base, metallic, roughness, ior, glm::max(emission, glm::vec3(0.0f)));
+        out.material = principled_material(base, metallic, roughness, ior, glm::max(emission, glm::vec3(0.0f)),
+                                           pbr.metallicRoughnessTexture.index >= 0);
     }
     out.material.name = m.name;
-
-    // A metallic-roughness texture varies metallic, which principled_material() turned into a
-    // conductor at metallicFactor 1: such a material stays principled, metallic 1 times the texture.
     const tinygltf::TextureInfo& mr_texture = pbr.metallicRoughnessTexture;
-    const bool dielectric = transmission > 0.0;
-    if (mr_texture.index >= 0 && !dielectric && out.material.type != MaterialType::principled) {
-        const std::string kept = out.material.name;
-        out.material = Material();
-        out.material.name = kept;
-        out.material.type = MaterialType::principled;
-        out.material.base_color = base;
-        out.material.metallic = 1.0f;
-        out.material.roughness = roughness;
-        out.material.ior = ior;
-    }
     const MaterialType type = out.material.type;
     // Each texture on TEXCOORD_0 (its KHR_texture_transform included) where the material has the
     // parameter it multiplies; otherwise a note.

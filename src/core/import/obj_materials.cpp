@@ -1,6 +1,5 @@
 #include "core/import/obj_materials.h"
 
-#include <optional>
 #include <sstream>
 
 #include <cmath>
@@ -39,16 +38,31 @@ float roughness_from_phong_exponent(float ns) {
     return 1.0f - std::sqrt(clamped / 1000.0f);
 }
 
-// map_d's -imfchan: r, g, b and l name the channel; tinyobjloader writes m (matte) where the
-// file names none, which is read_coverage_texture_file's automatic choice.
-std::optional<CoverageChannel> coverage_channel(char imfchan) {
-    switch (imfchan) {
-        case 'm': return CoverageChannel::automatic;
-        case 'r': return CoverageChannel::red;
-        case 'g': return CoverageChannel::green;
-        case 'b': return CoverageChannel::blue;
-        case 'l': return CoverageChannel::luminance;
-        default: return std::nullopt;  // z (depth) has no meaning for coverage
+// A map's -imfchan: r, g, b and l name the channel; tinyobjloader writes m (matte) where the
+// file names none, which reads `unnamed`. z (depth) means nothing for these maps: a note, and
+// `unnamed` too.
+ScalarMap scalar_map(const std::string& file, const tinyobj::texture_option_t& options, const char* key, ScalarChannel unnamed,
+                     ImportedMaterial& out) {
+    ScalarMap map{file, unnamed};
+    switch (options.imfchan) {
+        case 'r': map.channel = ScalarChannel::red; break;
+        case 'g': map.channel = ScalarChannel::green; break;
+        case 'b': map.channel = ScalarChannel::blue; break;
+        case 'l': map.channel = ScalarChannel::luminance; break;
+        case 'm': break;
+        default: out.unmapped.push_back(std::string(key) + " -imfchan " + options.imfchan + " (its default channel read)");
+    }
+    return map;
+}
+
+// Reads a map through `read`, an ImageError becoming a MeshFileError naming the OBJ file, the
+// material and the map's key.
+template <class Read>
+int read_map(const tinyobj::material_t& m, const std::string& obj_path, const char* key, Read read) {
+    try {
+        return read();
+    } catch (const ImageError& e) {
+        throw MeshFileError(obj_path + ": material \"" + m.name + "\": " + key + ": " + e.what());
     }
 }
 
@@ -70,16 +84,8 @@ void map_dissolve(const tinyobj::material_t& m, const std::string& obj_path, Obj
     out.material.alpha_mode = AlphaMode::blend;
     out.material.alpha_factor = partial ? fraction_from_file(m.dissolve, "d", out) : 1.0f;
     if (has_map) {
-        std::optional<CoverageChannel> channel = coverage_channel(m.alpha_texopt.imfchan);
-        if (!channel) {
-            out.unmapped.push_back(std::string("map_d -imfchan ") + m.alpha_texopt.imfchan + " (its default channel read)");
-            channel = CoverageChannel::automatic;
-        }
-        try {
-            out.material.alpha_texture = textures.add_coverage(m.alpha_texname, *channel);
-        } catch (const ImageError& e) {
-            throw MeshFileError(obj_path + ": material \"" + m.name + "\": map_d: " + e.what());
-        }
+        const ScalarMap map = scalar_map(m.alpha_texname, m.alpha_texopt, "map_d", ScalarChannel::alpha_else_luminance, out);
+        out.material.alpha_texture = read_map(m, obj_path, "map_d", [&] { return textures.add_coverage(map); });
     } else if (out.material.alpha_factor == 0.0f) {
         // Followed, as Blender and Cycles follow it, but said: exporters that write Tr where they
         // mean d (some write Tr 1 for opaque) make whole objects vanish this way.
@@ -90,34 +96,14 @@ void map_dissolve(const tinyobj::material_t& m, const std::string& obj_path, Obj
 
 }  // namespace
 
-int ObjTextures::add_color(const std::string& file) { return add(file, std::nullopt); }
-int ObjTextures::add_coverage(const std::string& file, CoverageChannel channel) { return add(file, channel); }
-
-int ObjTextures::add(const std::string& file, Use use) {
-    if (!read_) return -1;
-    const std::filesystem::path relative(file);
-    const std::string resolved = relative.is_absolute() ? file : (base_dir_ / relative).string();
-    if (const auto it = index_of_.find({resolved, use}); it != index_of_.end()) return it->second;
-    TextureImage image;
-    image.name = resolved;
-    if (!use) {
-        image.srgb = colour_file_is_srgb(resolved);
-        image.texels = read_texture_file(resolved);
-    } else {
-        image.srgb = false;  // coverage is data (and the alpha test reads alpha, never decoded)
-        image.texels = read_coverage_texture_file(resolved, *use);
-    }
-    out_.push_back(std::move(image));
-    return index_of_[{resolved, use}] = int(out_.size() - 1);
-}
-
 ImportedMaterial map_obj_material(const tinyobj::material_t& m, const std::string& obj_path, ObjTextures& textures) {
     ImportedMaterial out;
     const glm::vec3 kd(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
     const glm::vec3 ks(m.specular[0], m.specular[1], m.specular[2]);
     const glm::vec3 ke = glm::max(glm::vec3(m.emission[0], m.emission[1], m.emission[2]), glm::vec3(0.0f));
     // tinyobjloader leaves Pr and Pm at 0 when a file has neither, so "Pr 0 Pm 0" reads as no PBR keys.
-    const bool pbr = m.roughness != 0.0f || m.metallic != 0.0f;
+    const bool roughness_map = !m.roughness_texname.empty(), metallic_map = !m.metallic_texname.empty();
+    const bool pbr = m.roughness != 0.0f || m.metallic != 0.0f || roughness_map || metallic_map;
     const bool highlight = m.illum != 0 && m.illum != 1 && (ks.x > 0.0f || ks.y > 0.0f || ks.z > 0.0f);
     if (m.illum == 3 || m.illum == 5) {
         out.material.type = MaterialType::mirror;
@@ -134,11 +120,22 @@ ImportedMaterial map_obj_material(const tinyobj::material_t& m, const std::strin
         // The PBR extension's Pr and Pm where given, else Phong's highlight as a dielectric's
         // specular lobe of roughness from Ns; Ks's colour and strength have no place in glTF's
         // model (its dielectric reflects F0 0.04, from ior 1.5), so only its presence counts.
+        // A map replaces its value, as Blender's importer links it in place of the value: the
+        // factor it multiplies (glTF's layout) is 1. With a map the material stays principled,
+        // as glTF's does with its metallicRoughnessTexture (the shade stage reads it there).
         const glm::vec3 base = reflectance_from_file(kd, "Kd", out);
-        const float metallic = pbr ? fraction_from_file(m.metallic, "Pm", out) : 0.0f;
-        const float roughness = pbr ? fraction_from_file(m.roughness, "Pr", out) : roughness_from_phong_exponent(m.shininess);
+        const float metallic = metallic_map ? 1.0f : (pbr ? fraction_from_file(m.metallic, "Pm", out) : 0.0f);
+        const float roughness = roughness_map ? 1.0f
+                                : pbr         ? fraction_from_file(m.roughness, "Pr", out)
+                                              : roughness_from_phong_exponent(m.shininess);
         if (!pbr) out.unmapped.push_back("Ks (the specular is a dielectric's, F0 0.04; Ns gave its roughness)");
-        out.material = principled_material(base, metallic, roughness, 1.5f, ke);
+        out.material = principled_material(base, metallic, roughness, 1.5f, ke, roughness_map || metallic_map);
+        if (roughness_map || metallic_map) {
+            const ScalarMap r = roughness_map ? scalar_map(m.roughness_texname, m.roughness_texopt, "map_Pr", ScalarChannel::luminance, out) : ScalarMap{};
+            const ScalarMap p = metallic_map ? scalar_map(m.metallic_texname, m.metallic_texopt, "map_Pm", ScalarChannel::luminance, out) : ScalarMap{};
+            const char* key = roughness_map && metallic_map ? "map_Pr and map_Pm" : (roughness_map ? "map_Pr" : "map_Pm");
+            out.material.metallic_roughness_texture = read_map(m, obj_path, key, [&] { return textures.add_metallic_roughness(r, p); });
+        }
     } else {
         out.material.type = MaterialType::lambertian;
         out.material.albedo = reflectance_from_file(kd, "Kd", out);
@@ -151,19 +148,15 @@ ImportedMaterial map_obj_material(const tinyobj::material_t& m, const std::strin
     const bool maps_kd = !m.diffuse_texname.empty() &&
                          (type == MaterialType::lambertian || type == MaterialType::principled ||
                           type == MaterialType::conductor || type == MaterialType::rough_conductor);
-    if (maps_kd) {
-        try {
-            out.material.color_texture = textures.add_color(m.diffuse_texname);
-        } catch (const ImageError& e) {
-            throw MeshFileError(obj_path + ": material \"" + m.name + "\": map_Kd: " + e.what());
-        }
-    }
+    if (maps_kd) out.material.color_texture = read_map(m, obj_path, "map_Kd", [&] { return textures.add_color(m.diffuse_texname); });
+    // map_Pr and map_Pm where the principled material above read them; a mirror or glass has neither.
+    const bool maps_pbr = type == MaterialType::principled;
 
     const struct { std::string name; const char* key; } unread[] = {
         {m.ambient_texname, "map_Ka"},   {maps_kd ? std::string() : m.diffuse_texname, "map_Kd"},     {m.specular_texname, "map_Ks"},
         {m.specular_highlight_texname, "map_Ns"}, {m.bump_texname, "bump"}, {m.displacement_texname, "disp"},
-        {m.reflection_texname, "refl"},    {m.roughness_texname, "map_Pr"},
-        {m.metallic_texname, "map_Pm"},  {m.sheen_texname, "map_Ps"},       {m.emissive_texname, "map_Ke"},
+        {m.reflection_texname, "refl"},    {maps_pbr ? std::string() : m.roughness_texname, "map_Pr"},
+        {maps_pbr ? std::string() : m.metallic_texname, "map_Pm"},  {m.sheen_texname, "map_Ps"},       {m.emissive_texname, "map_Ke"},
         {m.normal_texname, "norm"}};
     for (const auto& t : unread)
         if (!t.name.empty()) out.unmapped.push_back(std::string(t.key) + " texture");

@@ -28,12 +28,14 @@ inline MaterialType dielectric_type(float roughness, float ior) {
 }
 
 // The factors in range (the loaders check or clamp them); the name is left to the caller.
+// metallic_varies: a texture will multiply metallic (glTF's metallicRoughnessTexture, MTL's
+// map_Pm), so metallic 1 stays principled instead of loading as the conductor it otherwise is.
 inline Material principled_material(const glm::vec3& base_color, float metallic, float roughness, float ior,
-                                    const glm::vec3& emission) {
+                                    const glm::vec3& emission, bool metallic_varies = false) {
     Material m;
     m.roughness = roughness;
     m.emission = emission;
-    if (metallic == 1.0f && !m.is_emissive()) {
+    if (metallic == 1.0f && !m.is_emissive() && !metallic_varies) {
         m.type = conductor_type(roughness);
         m.f0 = base_color;
         return m;

@@ -25,24 +25,23 @@ std::shared_ptr<const TextureTexels> read_texture_file(const std::string& path) 
     return texels_of(read_image(path, ImageLimits{kMaxTexturePixels, kMaxTextureSide}));
 }
 
-std::shared_ptr<const TextureTexels> read_coverage_texture_file(const std::string& path, CoverageChannel channel) {
+std::shared_ptr<const TextureTexels> read_scalar_texture_file(const std::string& path, ScalarChannel channel) {
     const ImageData image = read_image(path, ImageLimits{kMaxTexturePixels, kMaxTextureSide});
-    std::shared_ptr<const TextureTexels> texels = texels_of(image);
     const std::size_t n = image.channels.size();
-    if (channel == CoverageChannel::automatic) {
-        if (n == 2 || n >= 4) return texels;
-        channel = CoverageChannel::luminance;
-    }
-    auto coverage = std::make_shared<TextureTexels>(*texels);
-    for (glm::vec4& c : coverage->rgba) {
+    if (channel == ScalarChannel::alpha_else_luminance) channel = n == 2 || n >= 4 ? ScalarChannel::alpha : ScalarChannel::luminance;
+    auto texels = std::make_shared<TextureTexels>(*texels_of(image));
+    for (glm::vec4& c : texels->rgba) {
+        float value = c.w;
         switch (channel) {
-            case CoverageChannel::red: c.w = c.x; break;
-            case CoverageChannel::green: c.w = c.y; break;
-            case CoverageChannel::blue: c.w = c.z; break;
-            default: c.w = n <= 2 ? c.x : std::min(0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z, 1.0f); break;
+            case ScalarChannel::red: value = c.x; break;
+            case ScalarChannel::green: value = c.y; break;
+            case ScalarChannel::blue: value = c.z; break;
+            case ScalarChannel::luminance: value = n <= 2 ? c.x : std::min(0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z, 1.0f); break;
+            default: break;  // alpha
         }
+        c = glm::vec4(value);
     }
-    return coverage;
+    return texels;
 }
 
 bool colour_file_is_srgb(const std::string& path) {

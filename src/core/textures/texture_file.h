@@ -21,16 +21,17 @@ constexpr std::size_t kMaxTexturePixels = std::size_t(8192) * 8192;
 std::shared_ptr<const TextureTexels> texels_of(const ImageData& image);
 
 std::shared_ptr<const TextureTexels> read_texture_file(const std::string& path);
-// Which of a scalar map's channels is its value (MTL's -imfchan r, g, b or l).
-enum class CoverageChannel { automatic, red, green, blue, luminance };
+// Which of an image's channels a scalar map (MTL's map_d, map_Pr, map_Pm) takes its value from:
+// one the file names (MTL's -imfchan r, g, b, l), or, for coverage (map_d), its alpha where it
+// has an alpha channel (exporters that reuse the colour image for map_d mean that) and its
+// luminance where not. Luminance is the grey value, or Rec. 709's weights of the stored RGB: the
+// channel the MTL specification reads from scalar maps by default (-imfchan l), as in the grey
+// masks of Crytek's Sponza.
+enum class ScalarChannel { red, green, blue, alpha, luminance, alpha_else_luminance };
 
-// A scalar map read as coverage (MTL's map_d) into the alpha channel the alpha test reads.
-// `automatic`: an image with an alpha channel (grey and alpha, or RGBA) keeps it, since
-// exporters that reuse the colour image for map_d mean its alpha; one without takes its
-// luminance, the channel the MTL specification reads from scalar maps by default (-imfchan l),
-// as in the grey masks of Crytek's Sponza. Luminance is the grey value, or Rec. 709's weights
-// of the stored RGB.
-std::shared_ptr<const TextureTexels> read_coverage_texture_file(const std::string& path, CoverageChannel channel);
+// A scalar map as texels whose four channels all hold its value (the alpha test reads the
+// fourth, a metallic-roughness texture is assembled from the first).
+std::shared_ptr<const TextureTexels> read_scalar_texture_file(const std::string& path, ScalarChannel channel);
 // Whether a colour texture file's values are sRGB-encoded: all but the float formats, EXR and
 // HDR (by the extension, any case), whose values are linear already.
 bool colour_file_is_srgb(const std::string& path);
