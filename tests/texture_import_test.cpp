@@ -2,7 +2,8 @@
 // read through the image module (the test writes its PNGs with it); a .glb's half-black,
 // half-white texture renders each half as the untextured black and white materials do, bit for
 // bit; and bad images (missing, corrupt, too large) are errors naming the file, the material
-// and the field, while a non-power-of-two image is a texture like any other.
+// and the field, while a non-power-of-two image is a texture like any other. An emissiveTexture
+// (and a scene file's emission texture) emits from the white half alone.
 
 #include <fstream>
 #include <sstream>
@@ -216,6 +217,127 @@ TEST_F(TextureImport, BadImagesNameTheFileMaterialAndField) {
     const Json whole = square(file, {}, big);
     write("whole.glb", test::glb(whole.dump(), file.bin()));
     EXPECT_EQ(load_from_file("whole.glb").textures.size(), 1u);
+}
+
+// glTF's emissiveTexture (3.9.5) multiplies emissiveFactor and KHR_materials_emissive_strength:
+// the half-black, half-white image emits from its white half alone, exactly the factor there.
+// An image that cannot be read is an error naming the field; on glass (which cannot emit) and with
+// the factor 0 (where it changes nothing) it is not mapped, the first with a note.
+TEST_F(TextureImport, GltfEmissiveTextureMultipliesTheFactor) {
+    const auto with_emission = [](Json j, bool base_colour) {
+        Json& m = j["materials"][0];
+        m["emissiveFactor"] = {2.0, 2.0, 2.0};
+        m["emissiveTexture"] = {{"index", 0}};
+        m["extensions"]["KHR_materials_emissive_strength"] = {{"emissiveStrength", 3.0}};
+        if (!base_colour) m["pbrMetallicRoughness"].erase("baseColorTexture");
+        return j;
+    };
+    GltfFile file;
+    const Json j = with_emission(square(file, {}, half_black_png(8, 8)), true);
+    write("panel.glb", test::glb(j.dump(), file.bin()));
+    SceneDescription d = load_from_file("panel.glb");
+    const Material& m = d.materials.back();  // after the scene file's own
+    EXPECT_EQ(m.name, "panel.glb/panel");
+    EXPECT_EQ(m.emission, glm::vec3(6.0f));
+    ASSERT_GE(m.emission_texture, 0);
+    ASSERT_LT(std::size_t(m.emission_texture), d.textures.size());
+    EXPECT_TRUE(d.textures[std::size_t(m.emission_texture)].srgb);
+    EXPECT_NE(d.textures[std::size_t(m.emission_texture)].name.find("emissiveTexture"), std::string::npos);
+    for (const std::string& note : d.notes) EXPECT_EQ(note.find("emissiveTexture"), std::string::npos) << note;
+    // Seen from above with no other light: 0 over the black half, 6 over the white half.
+    test::view_from_above(d, 16, 4);
+    d.lights.clear();
+    const Film film = test::render_film(d, Integrator::wavefront).film;
+    for (int y = 0; y < 16; ++y) {
+        for (int x : {0, 1}) EXPECT_EQ(film.pixel_mean(uint32_t(y * 16 + x)).x, 0.0) << x << "," << y;
+        for (int x : {14, 15}) EXPECT_NEAR(film.pixel_mean(uint32_t(y * 16 + x)).x, 6.0, 6e-6) << x << "," << y;
+    }
+
+    // A mesh two nodes share, emitting: placed flattened, once per node, each copy with its
+    // coordinates, so the light samples of either copy read black on its left half (u < 0.4375:
+    // texels 0 to 3 alone) and the factor on its right half.
+    Json shared = j;
+    shared["nodes"] = {{{"mesh", 0}, {"translation", {-5.0, 0.0, 0.0}}}, {{"mesh", 0}, {"translation", {5.0, 0.0, 0.0}}}};
+    shared["scenes"] = {{{"nodes", {0, 1}}}};
+    write("shared.glb", test::glb(shared.dump(), file.bin()));
+    const SceneDescription two = load_from_file("shared.glb");
+    EXPECT_TRUE(two.prototypes.empty());
+    ASSERT_EQ(two.meshes.size(), 2u);
+    for (const TriangleMesh& mesh : two.meshes) EXPECT_EQ(mesh.uvs.size(), mesh.vertices.size());
+    const Scene lit = build_scene(two);
+    ASSERT_EQ(lit.lights.size(), 4u);
+    int black = 0, white = 0;
+    for (std::size_t k = 0; k < lit.lights.size(); ++k)
+        for (int i = 0; i < 64; ++i) {
+            const LightSample sample = lit.lights.sample_emitter(k, (float(i % 8) + 0.5f) / 8.0f, (float(i / 8) + 0.5f) / 8.0f);
+            const float local_x = sample.position.x - (sample.position.x < 0.0f ? -5.0f : 5.0f);
+            if (local_x < -0.6f) {
+                EXPECT_EQ(sample.radiance, glm::vec3(0.0f)) << k << " at x " << sample.position.x;
+                ++black;
+            }
+            if (local_x > 0.6f) {
+                EXPECT_EQ(sample.radiance, glm::vec3(6.0f)) << k << " at x " << sample.position.x;
+                ++white;
+            }
+        }
+    EXPECT_GT(black, 32);
+    EXPECT_GT(white, 32);
+
+    GltfFile missing_file;
+    const Json missing = with_emission(square(missing_file, {{"uri", "missing.png"}}), false);
+    write("missing.glb", test::glb(missing.dump(), missing_file.bin()));
+    const std::string message = texture_error("missing.glb");
+    test::expect_mesh_error(message, "missing.glb", "material \"panel\": emissiveTexture: image 0 (missing.png): the file is missing or unreadable");
+
+    GltfFile glass_file;
+    Json glass = with_emission(square(glass_file, {}, half_black_png(8, 8)), false);
+    glass["materials"][0]["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
+    write("glass.glb", test::glb(glass.dump(), glass_file.bin()));
+    const SceneDescription g = load_from_file("glass.glb");
+    EXPECT_EQ(g.materials.back().emission_texture, -1);
+    ASSERT_EQ(g.notes.size(), 1u);
+    EXPECT_NE(g.notes[0].find("emissiveTexture"), std::string::npos) << g.notes[0];
+
+    GltfFile dark_file;
+    Json dark = with_emission(square(dark_file, {}, half_black_png(8, 8)), false);
+    dark["materials"][0]["emissiveFactor"] = {0.0, 0.0, 0.0};
+    write("dark.glb", test::glb(dark.dump(), dark_file.bin()));
+    const SceneDescription k = load_from_file("dark.glb");
+    EXPECT_EQ(k.materials.back().emission_texture, -1);
+    EXPECT_FALSE(k.materials.back().is_emissive());
+    for (const std::string& note : k.notes) EXPECT_EQ(note.find("emissiveTexture"), std::string::npos) << note;
+}
+
+// A scene file's "emission" takes a texture as "albedo" does, its factor allowed above 1.
+TEST_F(TextureImport, SceneFileEmissionTexture) {
+    half_black_png(8, 8);
+    const std::string quad = R"({"type": "quad", "vertices": [[-4, -4, 0], [4, -4, 0], [4, 4, 0], [-4, 4, 0]], "material": "panel"})";
+    SceneDescription d = load(quad, R"({"panel": {"type": "lambertian", "albedo": [0, 0, 0],
+        "emission": {"texture": "texture.png", "factor": [5, 5, 5]}}})");
+    ASSERT_EQ(d.textures.size(), 1u);
+    EXPECT_EQ(d.materials[0].emission, glm::vec3(5.0f));
+    EXPECT_EQ(d.materials[0].emission_texture, 0);
+    EXPECT_EQ(d.meshes[0].uvs.size(), 4u);
+    test::view_from_above(d, 16, 4);
+    d.lights.clear();
+    const Film film = test::render_film(d, Integrator::wavefront).film;
+    for (int y = 0; y < 16; ++y) {
+        for (int x : {0, 1}) EXPECT_EQ(film.pixel_mean(uint32_t(y * 16 + x)).x, 0.0) << x << "," << y;
+        for (int x : {14, 15}) EXPECT_NEAR(film.pixel_mean(uint32_t(y * 16 + x)).x, 5.0, 5e-6) << x << "," << y;
+    }
+    const SceneDescription p = load(quad, R"({"panel": {"type": "principled", "metallic": 1, "roughness": 0.5,
+        "base_color": [1, 1, 1], "emission": {"texture": "texture.png"}}})");
+    EXPECT_EQ(p.materials[0].type, MaterialType::principled);  // it emits: not the conductor
+    EXPECT_EQ(p.materials[0].emission, glm::vec3(1.0f));
+    EXPECT_EQ(p.materials[0].emission_texture, 0);
+    try {
+        load(quad, R"({"panel": {"type": "lambertian", "albedo": [0, 0, 0], "emission": {"texture": "glow.png"}}})");
+        ADD_FAILURE() << "no error for a missing emission texture";
+    } catch (const SceneError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("materials.panel.emission.texture"), std::string::npos) << message;
+        EXPECT_NE(message.find("glow.png"), std::string::npos) << message;
+    }
 }
 
 // A square like square()'s in OBJ: vt with v up (flipped on reading), its material's map_Kd.

@@ -45,6 +45,9 @@ struct Material {
     glm::vec3 reflectance{1.0f};  // mirror
     float ior = 1.5f;             // glass, relative to the surrounding medium (vacuum)
     glm::vec3 emission{0.0f};     // radiance leaving the front face (diffuse and principled materials only)
+    // glTF's emissiveTexture (3.9.5, colour): its RGB multiplies emission at each point of the
+    // surface, at hits and at light samples alike (core/lights/light_table.h); or -1.
+    int32_t emission_texture = -1;
     // conductor, rough_conductor, rough_glass (which also reads ior):
     float roughness = 0.0f;       // perceptual, in [0, 1]: the GGX alpha is roughness^2, as in glTF
     glm::vec3 f0{1.0f};           // conductors: reflectance at normal incidence (Schlick)
@@ -82,7 +85,8 @@ struct Material {
     glm::vec3 conductor_fresnel_average{0.0f};
 
     bool has_textures() const {
-        return color_texture >= 0 || metallic_roughness_texture >= 0 || normal_texture >= 0 || alpha_texture >= 0;
+        return color_texture >= 0 || metallic_roughness_texture >= 0 || normal_texture >= 0 || alpha_texture >= 0 ||
+               emission_texture >= 0;
     }
     bool is_alpha_tested() const { return alpha_mode != AlphaMode::opaque; }
     bool is_emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }

@@ -63,6 +63,8 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         if (m.type == MaterialType::principled) h.value(m.base_color), h.value(m.metallic);
         if (m.has_textures())
             h.value(m.color_texture), h.value(m.metallic_roughness_texture), h.value(m.normal_texture), h.value(m.normal_scale);
+        // Only where there is one: the other scenes' hashes (and their checkpoints) stay as they were.
+        if (m.emission_texture >= 0) h.value(m.emission_texture);
         if (m.is_alpha_tested())
             h.value(m.alpha_mode), h.value(m.alpha_factor), h.value(m.alpha_cutoff), h.value(m.alpha_texture);
     }

@@ -103,7 +103,11 @@ ImportedMaterial map_gltf_material(const tinygltf::Material& m, const std::strin
     out.material.normal_texture = map_texture(m.normalTexture, true, false, "normalTexture");
     out.material.normal_scale = std::isfinite(m.normalTexture.scale) ? float(m.normalTexture.scale) : 1.0f;
     map_texture(m.occlusionTexture, false, false, "occlusionTexture");
-    map_texture(m.emissiveTexture, false, true, "emissiveTexture");
+    // glTF 2.0 (3.9.5): the emissive texture (sRGB colour) multiplies emissiveFactor (and
+    // KHR_materials_emissive_strength). With the factor 0, glTF's default, it changes nothing;
+    // on a type that does not emit (glass, a metal) it is noted, as the factor is.
+    if (emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f)
+        out.material.emission_texture = map_texture(m.emissiveTexture, out.material.is_emissive(), true, "emissiveTexture");
     map_alpha(m, name, textures.path(), out);
     return out;
 }

@@ -28,18 +28,16 @@ LightBounds emitter_bounds(const TriangleSoA& triangles, uint32_t i, double powe
 
 }  // namespace
 
-LightSelection chosen_light_selection(LightSelection setting, const LightTable& table, const TriangleSoA& triangles,
-                                      const std::vector<Material>& materials) {
+LightSelection chosen_light_selection(LightSelection setting, const LightTable& table) {
     if (setting != LightSelection::automatic) return setting;
     if (table.size() < kManyEmitters) return LightSelection::area;
-    const double first = luminance(materials[triangles.material[table.triangle_of(0)]].emission);
+    const double first = luminance(table.mean_radiance(0));
     for (std::size_t k = 1; k < table.size(); ++k)
-        if (luminance(materials[triangles.material[table.triangle_of(k)]].emission) != first) return LightSelection::power;
+        if (luminance(table.mean_radiance(k)) != first) return LightSelection::power;
     return LightSelection::area;
 }
 
-EmitterSelection::EmitterSelection(LightSelection how, const LightTable& table, const TriangleSoA& triangles,
-                                   const std::vector<Material>& materials)
+EmitterSelection::EmitterSelection(LightSelection how, const LightTable& table, const TriangleSoA& triangles)
     : how_(how) {
     if (how == LightSelection::area || how == LightSelection::automatic || table.empty()) return;
     std::vector<double> power(table.size());
@@ -48,7 +46,9 @@ EmitterSelection::EmitterSelection(LightSelection how, const LightTable& table, 
     for (std::size_t k = 0; k < table.size(); ++k) {
         const uint32_t i = table.triangle_of(k);
         const double area = emitter_area(triangles, i);
-        power[k] = kPiDouble * area * luminance(materials[triangles.material[i]].emission);
+        // An emission texture counts by its mean (LightTable::mean_radiance): the pick and the pdf
+        // both read this one table, so they agree whatever the texture.
+        power[k] = kPiDouble * area * luminance(table.mean_radiance(k));
         inverse_area_[k] = float(1.0 / area);
         emitter_of_triangle_[i] = uint32_t(k);
     }

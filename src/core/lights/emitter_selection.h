@@ -35,15 +35,14 @@ namespace wt {
 // evaluations per light sample and, blind to the BSDF, can starve a glossy lobe's far lights
 // (bench/README.md, "Many lights", measures the three).
 constexpr std::size_t kManyEmitters = 16;  // fewer: a scene with few lights keeps today's bits
-LightSelection chosen_light_selection(LightSelection setting, const LightTable& table, const TriangleSoA& triangles,
-                                      const std::vector<Material>& materials);
+LightSelection chosen_light_selection(LightSelection setting, const LightTable& table);
 
 class EmitterSelection {
 public:
     EmitterSelection() = default;
     // `how`: power or bvh (area builds nothing; chosen_light_selection() first resolves automatic).
     // `table`: the scene's emitters, in its order.
-    EmitterSelection(LightSelection how, const LightTable& table, const TriangleSoA& triangles, const std::vector<Material>& materials);
+    EmitterSelection(LightSelection how, const LightTable& table, const TriangleSoA& triangles);
 
     bool empty() const { return inverse_area_.empty(); }
     LightSelection how() const { return how_; }

@@ -6,7 +6,8 @@
 
 namespace wt {
 
-LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>& materials) {
+LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>& materials,
+                       const std::vector<MipPyramid>& textures, const TextureCoordinateTable& coordinates) {
     double running_area = 0.0;
     std::vector<double> cumulative;
     for (uint32_t i = 0; i < triangles.size(); ++i) {
@@ -18,8 +19,9 @@ LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>
         running_area += area;
         cumulative.push_back(running_area);
         const glm::vec3 v0 = triangles.vertex0(i), e1 = triangles.edge1(i), e2 = triangles.edge2(i);
+        emission_textures_.push(m.emission_texture, i, coordinates, textures);
         emitters_.push_back({v0, e1, e2, triangles.normal(i), m.emission, 0.0f, magnitude(v0), magnitude(e1), magnitude(e2),
-                             parallelogram});
+                             parallelogram, emission_textures_.textured(emitters_.size())});
         triangles_.push_back(i);
     }
     total_area_ = float(running_area);

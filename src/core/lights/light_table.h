@@ -1,7 +1,8 @@
 #pragma once
 // The emissive triangles as a sampling table. A light point is chosen with probability
 // proportional to area, so the pdf with respect to area is 1 / total_area everywhere on every
-// light, whatever their emission.
+// light, whatever their emission. An emitter with an emission texture returns its radiance
+// times the texture at the chosen point (core/lights/emission_textures.h).
 
 #include <algorithm>
 #include <cstddef>
@@ -15,6 +16,7 @@
 #include "core/base/ray_offset.h"
 #include "core/sampling/sampling.h"
 #include "core/description/scene_description.h"
+#include "core/lights/emission_textures.h"
 
 namespace wt {
 
@@ -35,7 +37,9 @@ struct LightSample {
 class LightTable {
 public:
     LightTable() = default;
-    LightTable(const TriangleSoA& triangles, const std::vector<Material>& materials);
+    // textures and coordinates: the scene's, read only for materials with an emission texture.
+    LightTable(const TriangleSoA& triangles, const std::vector<Material>& materials,
+               const std::vector<MipPyramid>& textures = {}, const TextureCoordinateTable& coordinates = {});
 
     bool empty() const { return emitters_.empty(); }
     std::size_t size() const { return emitters_.size(); }
@@ -55,10 +59,17 @@ public:
 
     // A point (u0, u1) on emitter k (an index into this table), with pdf_area left to the caller:
     // how light selection by power or by the light tree (core/lights/emitter_selection.h) samples.
-    LightSample sample_emitter(std::size_t k, float u0, float u1) const { return point_on(emitters_[k], u0, u1); }
+    LightSample sample_emitter(std::size_t k, float u0, float u1) const { return point_on(k, u0, u1); }
     // The scene triangle emitter k is.
     uint32_t triangle_of(std::size_t k) const { return triangles_[k]; }
-    std::size_t bytes() const { return emitters_.capacity() * sizeof(Emitter) + triangles_.capacity() * sizeof(uint32_t); }
+    // Emitter k's radiance, times its emission texture's mean where it has one: what selection
+    // by power and the light tree weigh it by (the same bits as its material's emission without).
+    glm::vec3 mean_radiance(std::size_t k) const {
+        return emitters_[k].textured ? emitters_[k].radiance * emission_textures_.mean(k) : emitters_[k].radiance;
+    }
+    std::size_t bytes() const {
+        return emitters_.capacity() * sizeof(Emitter) + triangles_.capacity() * sizeof(uint32_t) + emission_textures_.bytes();
+    }
 
 private:
     // The first emitter whose cdf exceeds u_choice (the last if none does, or u_choice is NaN).
@@ -85,8 +96,9 @@ private:
         float cdf;  // cumulative area fraction up to and including this triangle; the last is 1
         glm::vec3 abs_v0, abs_e1, abs_e2;  // for the sample's error bound, taken once here
         bool parallelogram;  // (u, v) uniform in the unit square, not folded into the triangle
+        bool textured;       // its radiance is multiplied by emission_textures_ at the point
     };
-    static LightSample point_on(const Emitter& e, float u0, float u1);
+    LightSample point_on(std::size_t k, float u0, float u1) const;
 
     std::vector<Emitter> emitters_;
     std::vector<uint32_t> triangles_;  // per emitter, its index in the scene's triangles
@@ -94,20 +106,23 @@ private:
     float total_area_ = 0.0f;
     float pdf_area_ = 0.0f;  // 1 / total_area_, divided once here rather than per sample
     float pdf_area_alone_ = 0.0f;
+    EmissionTextures emission_textures_;  // empty unless some emitter is textured
 };
 
-inline LightSample LightTable::point_on(const Emitter& e, float u0, float u1) {
+inline LightSample LightTable::point_on(std::size_t k, float u0, float u1) const {
+    const Emitter& e = emitters_[k];
     const glm::vec2 b = e.parallelogram ? glm::vec2(u0, u1) : sample_uniform_triangle(u0, u1);
     LightSample s;
     s.position = e.v0 + b.x * e.e1 + b.y * e.e2;
     s.error = triangle_point_error_from_magnitudes(e.abs_v0, e.abs_e1, e.abs_e2, b.x, b.y);
     s.normal = e.normal;
     s.radiance = e.radiance;
+    if (e.textured) s.radiance *= emission_textures_.at(k, b);
     return s;
 }
 
 inline LightSample LightTable::sample(const TriangleSoA&, float u_choice, float u0, float u1) const {
-    LightSample s = point_on(emitters_[pick(u_choice)], u0, u1);
+    LightSample s = point_on(pick(u_choice), u0, u1);
     s.pdf_area = pdf_area_;
     return s;
 }

@@ -87,13 +87,11 @@ SceneLights::SceneLights(const std::vector<LightDescription>& lights, double are
 
 int SceneLights::pick(float u, float& rescaled) const { return entries_[selection_.pick(u, rescaled)]; }
 
-double area_light_power(const TriangleSoA& triangles, const std::vector<Material>& materials) {
+double area_light_power(const TriangleSoA& triangles, const LightTable& table) {
+    // The table's emitters, in triangle order: the emissive triangles it leaves out have no area.
     double power = 0.0;
-    for (uint32_t i = 0; i < triangles.size(); ++i) {
-        const Material& m = materials[triangles.material[i]];
-        if (!m.is_emissive()) continue;
-        power += kPiDouble * emitter_area(triangles, i) * luminance(m.emission);
-    }
+    for (std::size_t k = 0; k < table.size(); ++k)
+        power += kPiDouble * emitter_area(triangles, table.triangle_of(k)) * luminance(table.mean_radiance(k));
     return power;
 }
 

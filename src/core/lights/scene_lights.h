@@ -26,6 +26,8 @@
 
 namespace wt {
 
+class LightTable;
+
 class SceneLights {
 public:
     SceneLights() = default;
@@ -69,7 +71,8 @@ private:
     BoundingSphere bounds_;
 };
 
-// Sum over the emissive triangles of pi * area * luminance(emission): the area lights' power.
-double area_light_power(const TriangleSoA& triangles, const std::vector<Material>& materials);
+// Sum over the emissive triangles of pi * area * luminance(emission), an emission texture's
+// mean included (LightTable::mean_radiance): the area lights' power.
+double area_light_power(const TriangleSoA& triangles, const LightTable& table);
 
 }  // namespace wt

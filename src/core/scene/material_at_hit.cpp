@@ -110,6 +110,14 @@ void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, c
         if (row.instance) t = row.instance->to_world.vector(t), b = row.instance->to_world.vector(b);
         apply_normal_map(t, b, lookup(textured.normal_texture), textured, surface);
     }
+    // glTF 2.0 (3.9.5): the emissive texture's RGB times emissiveFactor. Every ray but the
+    // camera's reads level 0, as the light table's samples of the same point do
+    // (core/lights/emission_textures.h), so a BSDF-sampled hit and a light sample weigh by MIS
+    // the same radiance.
+    if (textured.emission_texture >= 0) {
+        const glm::vec4 c = lookup(textured.emission_texture);
+        textured.emission *= glm::vec3(c.x, c.y, c.z);
+    }
     if (textured.metallic_roughness_texture >= 0) {
         const glm::vec4 c = lookup(textured.metallic_roughness_texture);
         textured.roughness *= c.y;

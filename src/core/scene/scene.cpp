@@ -162,14 +162,13 @@ Scene build_scene(const SceneDescription& description) {
         for (const TextureImage& image : description.textures) scene.textures.emplace_back(image);
         set_camera_cone(scene, description);
     }
-    scene.lights = LightTable(scene.triangles, scene.materials);
+    scene.lights = LightTable(scene.triangles, scene.materials, scene.textures, scene.texture_coordinates);
     // Another selection than by area only where there is a choice: with one emitter they all agree.
-    const LightSelection selection =
-        chosen_light_selection(description.settings.estimator.light_selection, scene.lights, scene.triangles, scene.materials);
+    const LightSelection selection = chosen_light_selection(description.settings.estimator.light_selection, scene.lights);
     if (selection != LightSelection::area && scene.lights.size() > 1)
-        scene.emitter_selection = EmitterSelection(selection, scene.lights, scene.triangles, scene.materials);
+        scene.emitter_selection = EmitterSelection(selection, scene.lights, scene.triangles);
     if (!description.lights.empty() || !scene.emitter_selection.empty()) {
-        scene.listed_lights = SceneLights(description.lights, scene.lights.empty() ? 0.0 : area_light_power(scene.triangles, scene.materials),
+        scene.listed_lights = SceneLights(description.lights, scene.lights.empty() ? 0.0 : area_light_power(scene.triangles, scene.lights),
                                           bounding_sphere(scene));
         if (!scene.lights.empty()) {
             scene.lights.set_selection_probability(scene.listed_lights.area_probability());

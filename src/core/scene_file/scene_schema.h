@@ -30,9 +30,10 @@ std::vector<Material> read_materials(const Reader& in, const Json& j, const std:
                                      std::vector<TextureImage>& textures);
 // A colour in [0, 1] ([r, g, b]), or {"texture": FILE, "factor": [r, g, b], "wrap": MODE}: then
 // the image is read (relative to the scene file), appended to `textures`, `texture` set to its
-// index, and the factor (white by default) returned.
+// index, and the factor (white by default) returned. at_most_one false: the colour and the
+// factor may exceed 1 (an emission).
 glm::vec3 read_color_or_texture(const Reader& in, const Json& j, const std::string& path, std::vector<TextureImage>& textures,
-                                int32_t& texture);
+                                int32_t& texture, bool at_most_one = true);
 // The index of the material named by the string j; fails naming the materials defined.
 uint32_t find_material(const Reader& in, const std::vector<Material>& materials, MaterialNames& names,
                        const Json& j, const std::string& path);

@@ -58,9 +58,12 @@ Material read_principled(const Reader& in, const Json& j, const std::string& pat
     const float roughness = read_fraction(in, in.required(j, "roughness", path), "roughness", path);
     const float ior = j.contains("ior") ? read_ior(in, j, path) : 1.5f;
     const Json* e = in.optional(j, "emission");
-    Material m = principled_material(base_color, metallic, roughness, ior,
-                                     e ? in.color(*e, member_path(path, "emission"), false) : glm::vec3(0.0f));
+    int32_t emission_texture = -1;
+    const glm::vec3 emission =
+        e ? read_color_or_texture(in, *e, member_path(path, "emission"), textures, emission_texture, false) : glm::vec3(0.0f);
+    Material m = principled_material(base_color, metallic, roughness, ior, emission);
     m.color_texture = texture;
+    if (m.is_emissive()) m.emission_texture = emission_texture;
     return m;
 }
 
@@ -120,7 +123,9 @@ Material read_material(const Reader& in, const std::string& name, const Json& j,
 
     if (m.type == MaterialType::lambertian || m.type == MaterialType::oren_nayar) {
         m.albedo = read_color_or_texture(in, in.required(j, "albedo", path), member_path(path, "albedo"), textures, m.color_texture);
-        if (const Json* e = in.optional(j, "emission")) m.emission = in.color(*e, member_path(path, "emission"), false);
+        if (const Json* e = in.optional(j, "emission"))
+            m.emission = read_color_or_texture(in, *e, member_path(path, "emission"), textures, m.emission_texture, false);
+        if (!m.is_emissive()) m.emission_texture = -1;  // 0 times the texture is 0
     }
     if (m.type == MaterialType::oren_nayar) {
         const Json& sigma = in.required(j, "sigma", path);

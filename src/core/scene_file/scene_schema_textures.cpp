@@ -21,8 +21,8 @@ TextureWrap read_wrap(const Reader& in, const Json& j, const std::string& path) 
 }  // namespace
 
 glm::vec3 read_color_or_texture(const Reader& in, const Json& j, const std::string& path, std::vector<TextureImage>& textures,
-                                int32_t& texture) {
-    if (!j.is_object()) return in.color(j, path, true);
+                                int32_t& texture, bool at_most_one) {
+    if (!j.is_object()) return in.color(j, path, at_most_one);
     in.check_keys(j, path, {"texture", "factor", "wrap"}, " for a texture");
     const std::string file_path = member_path(path, "texture");
     const std::string file = in.text(in.required(j, "texture", path), file_path);
@@ -40,7 +40,7 @@ glm::vec3 read_color_or_texture(const Reader& in, const Json& j, const std::stri
     textures.push_back(std::move(image));
     texture = int32_t(textures.size() - 1);
     const Json* factor = in.optional(j, "factor");
-    return factor ? in.color(*factor, member_path(path, "factor"), true) : glm::vec3(1.0f);
+    return factor ? in.color(*factor, member_path(path, "factor"), at_most_one) : glm::vec3(1.0f);
 }
 
 }  // namespace wt

@@ -79,13 +79,16 @@ MipPyramid::MipPyramid(const TextureImage& image)
         const float det = std::fabs(image.scale.x * image.scale.y);
         if (det > 0.0f && std::isfinite(det)) log2_texel_scale_ += 0.5f * std::log2(det);
     }
-    levels_.push_back(std::move(base));
-    while (levels_.back().width > 1 || levels_.back().height > 1) levels_.push_back(box_downsample(levels_.back()));
+    std::vector<MipLevel> levels;
+    levels.push_back(std::move(base));
+    while (levels.back().width > 1 || levels.back().height > 1) levels.push_back(box_downsample(levels.back()));
+    levels_ = std::make_shared<const std::vector<MipLevel>>(std::move(levels));
 }
 
 std::size_t MipPyramid::bytes() const {
     std::size_t b = 0;
-    for (const MipLevel& l : levels_) b += l.texels.size() * sizeof(glm::vec4);
+    if (levels_)
+        for (const MipLevel& l : *levels_) b += l.texels.size() * sizeof(glm::vec4);
     return b;
 }
 

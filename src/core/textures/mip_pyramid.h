@@ -5,6 +5,7 @@
 // Our own layout rather than OpenImageIO's TextureSystem: README, "Textures", says why.
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,8 +35,8 @@ public:
     explicit MipPyramid(const TextureImage& image);
 
     const std::string& name() const { return name_; }
-    std::size_t level_count() const { return levels_.size(); }
-    const MipLevel& level(std::size_t i) const { return levels_[i]; }
+    std::size_t level_count() const { return levels_ ? levels_->size() : 0; }
+    const MipLevel& level(std::size_t i) const { return (*levels_)[i]; }
     TextureWrap wrap_s() const { return wrap_s_; }
     TextureWrap wrap_t() const { return wrap_t_; }
     // 0.5 log2(width * height) of level 0, plus the transform's 0.5 log2 |det|: the texture's
@@ -51,7 +52,9 @@ public:
 
 private:
     std::string name_;
-    std::vector<MipLevel> levels_;
+    // Shared by copies: the light table keeps its emitters' textures (core/lights/light_table.h)
+    // without a second copy of their texels, and without pointing into the scene.
+    std::shared_ptr<const std::vector<MipLevel>> levels_;
     TextureWrap wrap_s_ = TextureWrap::repeat, wrap_t_ = TextureWrap::repeat;
     float log2_texel_scale_ = 0.0f;
     bool transformed_ = false;
