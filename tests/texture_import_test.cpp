@@ -435,6 +435,38 @@ TEST_F(TextureImport, ObjPbrMapsMakeTheMetallicRoughnessLayout) {
         EXPECT_NE(message.find(part), std::string::npos) << part << " not in: " << message;
 }
 
+TEST_F(TextureImport, ObjMapKeIsTheEmission) {
+    // map_Ke replaces Ke (0 here), as Blender's importer links it into the emission colour: the
+    // screen emits the texture's colour (an sRGB colour texture, factor 1); a mirror cannot emit,
+    // so its map_Ke is a note, not a texture.
+    half_black_png(8, 8, "screen.png");
+    write("m.mtl", "newmtl screen\nKd 0 0 0\nKe 0 0 0\nmap_Ke screen.png\nnewmtl shiny\nillum 3\nKs 1 1 1\nmap_Ke screen.png\n");
+    write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl screen\nf 1/1 2/1 3/1\nusemtl shiny\nf 1/1 3/1 2/1\n");
+    const SceneDescription d = load_from_file("m.obj");
+    const Material* screen = nullptr;
+    const Material* shiny = nullptr;
+    for (const Material& m : d.materials) {
+        if (m.name.find("screen") != std::string::npos) screen = &m;
+        if (m.name.find("shiny") != std::string::npos) shiny = &m;
+    }
+    ASSERT_NE(screen, nullptr);
+    ASSERT_NE(shiny, nullptr);
+    EXPECT_EQ(screen->emission, glm::vec3(1.0f));
+    ASSERT_GE(screen->emission_texture, 0);
+    EXPECT_TRUE(d.textures[std::size_t(screen->emission_texture)].srgb);
+    EXPECT_EQ(d.textures[std::size_t(screen->emission_texture)].texels->rgba[7], glm::vec4(1.0f));
+    EXPECT_EQ(d.textures[std::size_t(screen->emission_texture)].texels->rgba[0], glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    EXPECT_EQ(shiny->emission_texture, -1);
+    EXPECT_FALSE(shiny->is_emissive());
+    bool screen_note = false, shiny_note = false;
+    for (const std::string& note : d.notes) {
+        screen_note = screen_note || note.find("screen:") != std::string::npos;
+        shiny_note = shiny_note || (note.find("shiny") != std::string::npos && note.find("map_Ke texture") != std::string::npos);
+    }
+    EXPECT_FALSE(screen_note);
+    EXPECT_TRUE(shiny_note);
+}
+
 TEST_F(TextureImport, SceneFileAlbedoTextureOnAQuad) {
     half_black_png(8, 8);
     const std::string quad = R"({"type": "quad", "vertices": [[-4, -4, 0], [4, -4, 0], [4, 4, 0], [-4, 4, 0]], "material": "panel"})";

@@ -100,7 +100,9 @@ ImportedMaterial map_obj_material(const tinyobj::material_t& m, const std::strin
     ImportedMaterial out;
     const glm::vec3 kd(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
     const glm::vec3 ks(m.specular[0], m.specular[1], m.specular[2]);
-    const glm::vec3 ke = glm::max(glm::vec3(m.emission[0], m.emission[1], m.emission[2]), glm::vec3(0.0f));
+    // map_Ke replaces Ke, as map_Pr and map_Pm replace their values (below): its colour is the emission.
+    const bool emission_map = !m.emissive_texname.empty();
+    const glm::vec3 ke = emission_map ? glm::vec3(1.0f) : glm::max(glm::vec3(m.emission[0], m.emission[1], m.emission[2]), glm::vec3(0.0f));
     // tinyobjloader leaves Pr and Pm at 0 when a file has neither, so "Pr 0 Pm 0" reads as no PBR keys.
     const bool roughness_map = !m.roughness_texname.empty(), metallic_map = !m.metallic_texname.empty();
     const bool pbr = m.roughness != 0.0f || m.metallic != 0.0f || roughness_map || metallic_map;
@@ -149,6 +151,9 @@ ImportedMaterial map_obj_material(const tinyobj::material_t& m, const std::strin
                          (type == MaterialType::lambertian || type == MaterialType::principled ||
                           type == MaterialType::conductor || type == MaterialType::rough_conductor);
     if (maps_kd) out.material.color_texture = read_map(m, obj_path, "map_Kd", [&] { return textures.add_color(m.diffuse_texname); });
+    // map_Ke where the material emits (a mirror, metal or glass cannot: emission_from_file noted it).
+    const bool maps_ke = emission_map && out.material.is_emissive();
+    if (maps_ke) out.material.emission_texture = read_map(m, obj_path, "map_Ke", [&] { return textures.add_color(m.emissive_texname); });
     // map_Pr and map_Pm where the principled material above read them; a mirror or glass has neither.
     const bool maps_pbr = type == MaterialType::principled;
 
@@ -156,7 +161,7 @@ ImportedMaterial map_obj_material(const tinyobj::material_t& m, const std::strin
         {m.ambient_texname, "map_Ka"},   {maps_kd ? std::string() : m.diffuse_texname, "map_Kd"},     {m.specular_texname, "map_Ks"},
         {m.specular_highlight_texname, "map_Ns"}, {m.bump_texname, "bump"}, {m.displacement_texname, "disp"},
         {m.reflection_texname, "refl"},    {maps_pbr ? std::string() : m.roughness_texname, "map_Pr"},
-        {maps_pbr ? std::string() : m.metallic_texname, "map_Pm"},  {m.sheen_texname, "map_Ps"},       {m.emissive_texname, "map_Ke"},
+        {maps_pbr ? std::string() : m.metallic_texname, "map_Pm"},  {m.sheen_texname, "map_Ps"},       {maps_ke ? std::string() : m.emissive_texname, "map_Ke"},
         {m.normal_texname, "norm"}};
     for (const auto& t : unread)
         if (!t.name.empty()) out.unmapped.push_back(std::string(t.key) + " texture");

@@ -16,7 +16,7 @@ namespace wt {
 // (refraction): glass with ior Ni, rough at Pr > 0. Otherwise, with the PBR extension's Pr or
 // Pm (either non-zero) or its maps map_Pr or map_Pm, glTF's metallic-roughness material of base
 // colour Kd; with a highlight (illum 2 or above and Ks not black) that material as a plastic,
-// metallic 0 and roughness from Ns; else Lambertian with albedo Kd. Ke is the emission. map_Kd
+// metallic 0 and roughness from Ns; else Lambertian with albedo Kd. Ke is the emission (map_Ke in its place). map_Kd
 // multiplies Kd (the albedo or the base colour); map_Pr and map_Pm replace Pr and Pm (as
 // Blender's importer links them in place of the values); d times map_d is alpha (README, Alpha).
 // Maps are read relative to the OBJ file's directory through `textures`; one that cannot be read
