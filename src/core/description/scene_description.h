@@ -109,6 +109,10 @@ struct TriangleMesh {
     // Texture coordinates, one per vertex (glTF's TEXCOORD_0; OBJ's vt with v flipped, so v = 0
     // is the image's top row in both), or empty. Read only when some material has a texture.
     std::vector<glm::vec2> uvs;
+    // Normal-map tangents, one per vertex, as glTF's TANGENT: xyz unit, w = +1 or -1 the side of
+    // the bitangent cross(normal, xyz) w; w = 0 where a vertex has none (its triangle uses its
+    // own frame). Empty unless a normal-mapped material's mesh came with or was given them.
+    std::vector<glm::vec4> tangents;
 };
 
 // A named mesh that instances place (the scene file's "meshes"; a glTF mesh used by several

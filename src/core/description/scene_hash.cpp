@@ -71,6 +71,7 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         h.array(mesh.vertices), h.array(mesh.triangles), h.array(mesh.normals);
         h.value(mesh.material), h.value(mesh.parallelogram);
         if (!mesh.uvs.empty()) h.array(mesh.uvs);
+        if (!mesh.tangents.empty()) h.array(mesh.tangents);
     }
     h.array(d.spheres);
     // Only when there are some: a scene without instances keeps the hash it had.
@@ -79,8 +80,10 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         for (const MeshPrototype& p : d.prototypes) {
             h.bytes(p.name.data(), p.name.size());
             h.word(p.parts.size());
-            for (const TriangleMesh& mesh : p.parts)
+            for (const TriangleMesh& mesh : p.parts) {
                 h.array(mesh.vertices), h.array(mesh.triangles), h.array(mesh.normals), h.value(mesh.material);
+                if (!mesh.tangents.empty()) h.array(mesh.tangents);
+            }
         }
         h.word(d.instances.size());
         for (const InstanceDescription& k : d.instances) h.value(k.prototype), h.value(k.transform);

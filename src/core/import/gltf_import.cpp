@@ -7,10 +7,12 @@
 
 #include <cmath>
 #include <cstring>
+#include <unordered_map>
 #include <unordered_set>
 
 #include <tiny_gltf.h>
 
+#include "core/geometry/mikktspace_tangents.h"
 #include "core/import/gltf_accessor.h"
 #include "core/import/gltf_lights.h"
 #include "core/import/gltf_load.h"
@@ -115,11 +117,12 @@ private:
 
     // TEXCOORD_0 (FLOAT, or normalised UNSIGNED_BYTE / UNSIGNED_SHORT), appended; a primitive
     // without it gets (0, 0), and a file where none has it stores none.
-    void read_texture_coordinates(const tinygltf::Primitive& primitive, const std::string& where, std::size_t count) {
+    // Returns whether the primitive has them.
+    bool read_texture_coordinates(const tinygltf::Primitive& primitive, const std::string& where, std::size_t count) {
         const std::size_t first = mesh_.uvs.size();
         mesh_.uvs.resize(first + count, glm::vec2(0.0f));
         const auto uv = primitive.attributes.find("TEXCOORD_0");
-        if (uv == primitive.attributes.end()) return;
+        if (uv == primitive.attributes.end()) return false;
         any_have_uvs_ = true;
         const GltfAccessor uvs(model_, uv->second, TINYGLTF_TYPE_VEC2,
                                {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
@@ -141,6 +144,74 @@ private:
             if (!std::isfinite(t.x) || !std::isfinite(t.y))
                 throw MeshFileError(uvs.context() + ": element " + std::to_string(i) + " is not finite");
         });
+        return true;
+    }
+
+    // Whether the primitive's material, the file's own, has a normal map: only then are its
+    // tangents read or made (a scene without normal maps stores none).
+    bool normal_mapped(const tinygltf::Primitive& primitive) const {
+        return use_.file_materials && primitive.material >= 0 && std::size_t(primitive.material) < model_.materials.size() &&
+               model_.materials[std::size_t(primitive.material)].normalTexture.index >= 0;
+    }
+
+    // The file's TANGENT (FLOAT VEC4, glTF 2.0 3.7.2.1), one per vertex from `first`; false,
+    // with a note, where some element is unusable (not finite, zero, or w not a sign), so that
+    // the primitive's tangents are made instead of any NaN reaching a shading normal.
+    bool read_file_tangents(int index, const std::string& where, std::size_t first, std::size_t count) {
+        const GltfAccessor tangents(model_, index, TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT},
+                                    accessor_name(index, "TANGENT", where));
+        if (tangents.count() != count) fail(where + ": TANGENT and POSITION counts differ");
+        std::size_t unusable = 0;
+        tangents.for_each([&](std::size_t i, const unsigned char* bytes) {
+            glm::vec4 t;
+            std::memcpy(&t, bytes, sizeof t);
+            const float length = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
+            if (!(length > 0.0f) || !std::isfinite(length) || !(t.w != 0.0f) || !std::isfinite(t.w)) ++unusable;
+            else mesh_.tangents[first + i] = glm::vec4(glm::vec3(t) / length, t.w > 0.0f ? 1.0f : -1.0f);
+        });
+        if (unusable == 0) return true;
+        mesh_.notes.push_back(tangents.context() + ": " + std::to_string(unusable) +
+                              " TANGENT elements are not finite, zero or have w = 0: MikkTSpace tangents are used instead");
+        return false;
+    }
+
+    // A normal-mapped primitive's tangents, its vertices `first` to `first + count` and its
+    // triangles from `first_triangle`: the file's, else MikkTSpace's (the specification's
+    // SHOULD). Those are per corner: a vertex whose corners got different ones (a seam between
+    // mirrored halves) is split, its copies appended to the primitive.
+    void add_tangents(const tinygltf::Primitive& primitive, const std::string& where, std::size_t first, std::size_t count,
+                      std::size_t first_triangle) {
+        mesh_.tangents.resize(mesh_.positions.size(), glm::vec4(0.0f));
+        const auto tangent = primitive.attributes.find("TANGENT");
+        if (tangent != primitive.attributes.end() && read_file_tangents(tangent->second, where, first, count)) return;
+        const std::vector<std::array<uint32_t, 3>> triangles(mesh_.triangles.begin() + std::ptrdiff_t(first_triangle),
+                                                             mesh_.triangles.end());
+        const std::vector<glm::vec4> corners = mikktspace_tangents(mesh_.positions, mesh_.normals, mesh_.uvs, triangles);
+        std::vector<bool> given(count, false);
+        std::unordered_map<uint32_t, std::vector<uint32_t>> copies;
+        for (std::size_t t = 0; t < triangles.size(); ++t)
+            for (int c = 0; c < 3; ++c) {
+                const uint32_t v = triangles[t][c];
+                const glm::vec4& g = corners[3 * t + c];
+                if (!given[v - first]) {
+                    given[v - first] = true;
+                    mesh_.tangents[v] = g;
+                    continue;
+                }
+                if (mesh_.tangents[v] == g) continue;
+                uint32_t copy = UINT32_MAX;
+                for (uint32_t k : copies[v])
+                    if (mesh_.tangents[k] == g) copy = k;
+                if (copy == UINT32_MAX) {
+                    copy = uint32_t(mesh_.positions.size());
+                    mesh_.positions.push_back(mesh_.positions[v]);
+                    if (!mesh_.normals.empty()) mesh_.normals.push_back(mesh_.normals[v]);
+                    mesh_.uvs.push_back(mesh_.uvs[v]);
+                    mesh_.tangents.push_back(g);
+                    copies[v].push_back(copy);
+                }
+                mesh_.triangles[first_triangle + t][std::size_t(c)] = copy;
+            }
     }
 
     void read_primitive(const tinygltf::Primitive& primitive, const std::string& where, const glm::dmat4& world) {
@@ -173,7 +244,7 @@ private:
             read_vec3s(normals, mesh_.normals);
         }
         if (!all_have_normals_) std::vector<glm::vec3>().swap(mesh_.normals);
-        read_texture_coordinates(primitive, where, positions.count());
+        const bool has_uvs = read_texture_coordinates(primitive, where, positions.count());
 
         const std::size_t first_triangle = mesh_.triangles.size();
         PrimitiveTriangles triangles(PrimitiveMode(mode), mesh_.triangles);
@@ -190,7 +261,12 @@ private:
         any_material_ |= has_material;
         mesh_.triangle_materials.resize(mesh_.triangles.size(),
                                         has_material ? uint32_t(primitive.material) : ImportedMesh::kNoMaterial);
-        mesh_.pieces.push_back({first, positions.count(), world});
+        // Without coordinates a normal map reads one texel everywhere and has no frame to turn.
+        if (has_uvs && normal_mapped(primitive)) add_tangents(primitive, where, first, positions.count(), first_triangle);
+        if (!mesh_.tangents.empty()) mesh_.tangents.resize(mesh_.positions.size(), glm::vec4(0.0f));
+        if (mesh_.positions.size() > UINT32_MAX)
+            fail(where + ": the instances come to more than 2^32 - 1 vertices (the renderer's indices are 32-bit)");
+        mesh_.pieces.push_back({first, mesh_.positions.size() - first, world});
     }
 
     // TRIANGLES takes them three by three; a strip or fan needs 3 to make its first triangle.

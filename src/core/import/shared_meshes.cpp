@@ -25,6 +25,8 @@ std::vector<ImportedMesh> take_shared_meshes(ImportedMesh& mesh) {
             new_index[v] = uint32_t(out.positions.size());
             out.positions.push_back(mesh.positions[v]);
             if (!mesh.normals.empty()) out.normals.push_back(mesh.normals[v]);
+            if (!mesh.uvs.empty()) out.uvs.push_back(mesh.uvs[v]);
+            if (!mesh.tangents.empty()) out.tangents.push_back(mesh.tangents[v]);
         }
     }
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {

@@ -1,5 +1,6 @@
 #include "core/scene/material_at_hit.h"
 
+#include <array>
 #include <cmath>
 
 #include "core/sampling/sampling.h"
@@ -76,6 +77,12 @@ float log2_density(const CoordinateRow& c) {
     return object_area > 0.0f && world_area > 0.0f ? density - 0.5f * std::log2(world_area / object_area) : density;
 }
 
+// -1 where a placement mirrors (its linear part's determinant is negative), else 1.
+float mirror_sign(const AffineTransform& a) {
+    const glm::vec3 r0(a.m[0][0], a.m[0][1], a.m[0][2]), r1(a.m[1][0], a.m[1][1], a.m[1][2]), r2(a.m[2][0], a.m[2][1], a.m[2][2]);
+    return glm::dot(r0, glm::cross(r1, r2)) < 0.0f ? -1.0f : 1.0f;
+}
+
 }  // namespace
 
 void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, const Ray& ray, bool from_camera,
@@ -107,7 +114,23 @@ void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, c
     if (textured.normal_texture >= 0 && row.table) {
         // An instanced triangle's tangents are in object space; tangents move with the placement.
         glm::vec3 t = row.table->tangent(row.row), b = row.table->bitangent(row.row);
-        if (row.instance) t = row.instance->to_world.vector(t), b = row.instance->to_world.vector(b);
+        if (const std::array<glm::vec4, 3>* vertex = row.table->vertex_tangents(row.row)) {
+            // The file's or MikkTSpace's, interpolated like the normals (glTF 2.0, 3.7.2.1), the
+            // bitangent cross(N, t) w. An instance places each vertex's and renormalises it, as
+            // a flattened copy's are placed (a non-uniform scale changes their lengths unequally);
+            // a mirroring placement turns the cross product the other way round, so w flips.
+            glm::vec3 corner[3];
+            for (int c = 0; c < 3; ++c) {
+                corner[c] = glm::vec3((*vertex)[c]);
+                if (row.instance) corner[c] = glm::normalize(row.instance->to_world.vector(corner[c]));
+            }
+            t = (1.0f - hit.u - hit.v) * corner[0] + hit.u * corner[1] + hit.v * corner[2];
+            float w = (1.0f - hit.u - hit.v) * (*vertex)[0].w + hit.u * (*vertex)[1].w + hit.v * (*vertex)[2].w;
+            if (row.instance) w *= mirror_sign(row.instance->to_world);
+            b = (w < 0.0f ? -1.0f : 1.0f) * glm::cross(surface.shading_normal, t);
+        } else if (row.instance) {
+            t = row.instance->to_world.vector(t), b = row.instance->to_world.vector(b);
+        }
         apply_normal_map(t, b, lookup(textured.normal_texture), textured, surface);
     }
     if (textured.metallic_roughness_texture >= 0) {

@@ -23,4 +23,10 @@ void TextureCoordinateTable::push(glm::vec2 uv0, glm::vec2 uv1, glm::vec2 uv2, f
     records_.push_back({uv0, uv1, uv2, std::isfinite(density) ? density : -INFINITY, tangent, bitangent});
 }
 
+void TextureCoordinateTable::set_vertex_tangents(const glm::vec4& t0, const glm::vec4& t1, const glm::vec4& t2) {
+    if (records_.empty()) return;
+    if (vertex_tangents_.size() < records_.size()) vertex_tangents_.resize(records_.size(), VertexTangents{glm::vec4(0.0f), glm::vec4(0.0f), glm::vec4(0.0f)});
+    vertex_tangents_.back() = VertexTangents{t0, t1, t2};
+}
+
 }  // namespace wt
