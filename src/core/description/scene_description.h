@@ -109,6 +109,9 @@ struct TriangleMesh {
     // Texture coordinates, one per vertex (glTF's TEXCOORD_0; OBJ's vt with v flipped, so v = 0
     // is the image's top row in both), or empty. Read only when some material has a texture.
     std::vector<glm::vec2> uvs;
+    // glTF's TEXCOORD_1, one per vertex, read by the textures whose coordinate_set is 1; empty
+    // unless some material of the mesh has such a texture.
+    std::vector<glm::vec2> second_uvs;
     // Normal-map tangents, one per vertex, as glTF's TANGENT: xyz unit, w = +1 or -1 the side of
     // the bitangent cross(normal, xyz) w; w = 0 where a vertex has none (its triangle uses its
     // own frame). Empty unless a normal-mapped material's mesh came with or was given them.

@@ -72,6 +72,7 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         h.value(mesh.material), h.value(mesh.parallelogram);
         if (!mesh.uvs.empty()) h.array(mesh.uvs);
         if (!mesh.tangents.empty()) h.array(mesh.tangents);
+        if (!mesh.second_uvs.empty()) h.array(mesh.second_uvs);
     }
     h.array(d.spheres);
     // Only when there are some: a scene without instances keeps the hash it had.
@@ -83,6 +84,7 @@ uint64_t scene_content_hash(const SceneDescription& d) {
             for (const TriangleMesh& mesh : p.parts) {
                 h.array(mesh.vertices), h.array(mesh.triangles), h.array(mesh.normals), h.value(mesh.material);
                 if (!mesh.tangents.empty()) h.array(mesh.tangents);
+                if (!mesh.second_uvs.empty()) h.array(mesh.second_uvs);
             }
         }
         h.word(d.instances.size());
@@ -93,6 +95,7 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         h.word(d.textures.size());
         for (const TextureImage& t : d.textures) {
             h.value(t.srgb), h.value(t.wrap_s), h.value(t.wrap_t), h.value(t.offset), h.value(t.scale), h.value(t.rotation);
+            if (t.coordinate_set != 0) h.value(t.coordinate_set);
             h.word(uint64_t(t.texels->width)), h.word(uint64_t(t.texels->height)), h.array(t.texels->rgba);
         }
     }

@@ -26,6 +26,7 @@ std::vector<ImportedMesh> take_shared_meshes(ImportedMesh& mesh) {
             out.positions.push_back(mesh.positions[v]);
             if (!mesh.normals.empty()) out.normals.push_back(mesh.normals[v]);
             if (!mesh.uvs.empty()) out.uvs.push_back(mesh.uvs[v]);
+            if (!mesh.second_uvs.empty()) out.second_uvs.push_back(mesh.second_uvs[v]);
             if (!mesh.tangents.empty()) out.tangents.push_back(mesh.tangents[v]);
         }
     }

@@ -65,11 +65,11 @@ CoordinateRow coordinate_row(const Scene& scene, const Hit& hit) {
     return c;
 }
 
-// 0.5 log2(texture area / world area) of the hit's triangle (TextureCoordinateTable::
-// log2_density): an instanced triangle's is its object-space density less half the log2 of how
-// much the placement scales its area.
-float log2_density(const CoordinateRow& c) {
-    const float density = c.table->log2_density(c.row);
+// 0.5 log2(texture area / world area) of the hit's triangle in coordinate set `set`
+// (TextureCoordinateTable::log2_density): an instanced triangle's is its object-space density
+// less half the log2 of how much the placement scales its area.
+float log2_density(const CoordinateRow& c, int set) {
+    const float density = c.table->log2_density(c.row, set);
     if (!c.instance) return density;
     const glm::vec3 e1 = c.mesh->triangles.edge1(uint32_t(c.row)), e2 = c.mesh->triangles.edge2(uint32_t(c.row));
     const float object_area = glm::length(glm::cross(e1, e2));
@@ -92,15 +92,18 @@ void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, c
     // Level of detail of a ray cone (Akenine-Moller et al. 2019, eq. 34): the triangle's texel
     // density plus log2 of the cone's width over the cosine of its incidence, plus the
     // texture's own term (added per texture below). Spheres and non-camera rays read level 0.
-    float lod = -INFINITY;
+    // Each texture reads its own coordinate set (TextureImage::coordinate_set), with that set's density.
+    float cone = -INFINITY;
     if (from_camera && row.table) {
         const float width = scene.cone_width0 + scene.cone_spread * hit.t;
         const float cosine = std::fabs(glm::dot(ray.direction, surface.normal));
-        lod = log2_density(row) + std::log2(width / cosine);
+        cone = std::log2(width / cosine);
     }
     const auto lookup = [&](int32_t texture) {
         const MipPyramid& t = scene.textures[std::size_t(texture)];
-        return texture_lookup(t, t.transformed(uv), lod + t.log2_texel_scale());
+        const int set = row.table ? t.coordinate_set() : 0;
+        const float lod = cone == -INFINITY ? -INFINITY : log2_density(row, set) + cone;
+        return texture_lookup(t, t.transformed(set == 0 ? uv : row.table->at(row.row, hit.u, hit.v, set)), lod + t.log2_texel_scale());
     };
     if (textured.color_texture >= 0) {
         const glm::vec4 c = lookup(textured.color_texture);

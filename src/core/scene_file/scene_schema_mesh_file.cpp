@@ -92,12 +92,14 @@ void split_by_material(const ImportedMesh& mesh, const std::vector<uint32_t>& ou
         part.material = ours[g];
         const bool uvs = !mesh.uvs.empty() && materials[part.material].has_textures();
         const bool tangents = uvs && !mesh.tangents.empty() && materials[part.material].normal_texture >= 0;
+        const bool second_uvs = uvs && !mesh.second_uvs.empty();
         for (uint32_t v : used) {
             remap[v] = uint32_t(part.vertices.size());
             part.vertices.push_back(mesh.positions[v]);
             if (!mesh.normals.empty()) part.normals.push_back(mesh.normals[v]);
             if (uvs) part.uvs.push_back(mesh.uvs[v]);
             if (tangents) part.tangents.push_back(mesh.tangents[v]);
+            if (second_uvs) part.second_uvs.push_back(mesh.second_uvs[v]);
         }
         for (uint32_t t : triangles_of[g]) {
             const auto& tri = mesh.triangles[t];

@@ -4,6 +4,7 @@
 // kernel reads it; the vertex tangents only when some normal-mapped mesh has them.
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -18,7 +19,8 @@ public:
     bool empty() const { return records_.empty(); }
     std::size_t size() const { return records_.size(); }
     std::size_t bytes() const {
-        return records_.capacity() * sizeof(Record) + vertex_tangents_.capacity() * sizeof(VertexTangents);
+        return records_.capacity() * sizeof(Record) + vertex_tangents_.capacity() * sizeof(VertexTangents) +
+               second_.capacity() * sizeof(Second);
     }
 
     // Indexed like TriangleSoA: one push per stored triangle, in its order. world_area is the
@@ -30,11 +32,26 @@ public:
     // side, w = 0 none). Stored only once some triangle has them: until then a table holds
     // exactly what it held before tangents were read, and rows before the first are none.
     void set_vertex_tangents(const glm::vec4& t0, const glm::vec4& t1, const glm::vec4& t2);
+    // The last pushed triangle's second coordinates (glTF's TEXCOORD_1), stored as the vertex
+    // tangents are: only once some triangle has them, (0, 0) for the rows before.
+    void set_second_coordinates(glm::vec2 uv0, glm::vec2 uv1, glm::vec2 uv2, float world_area);
 
     // The coordinates of triangle i at barycentrics (u, v) (the weights of vertices 1 and 2).
     glm::vec2 at(std::size_t i, float u, float v) const {
         const Record& r = records_[i];
         return (1.0f - u - v) * r.uv0 + u * r.uv1 + v * r.uv2;
+    }
+    // Set `set` (TextureImage::coordinate_set) of triangle i at (u, v): set 1 is (0, 0) where
+    // the triangle has none.
+    glm::vec2 at(std::size_t i, float u, float v, int set) const {
+        if (set == 0) return at(i, u, v);
+        if (i >= second_.size()) return glm::vec2(0.0f);
+        const Second& r = second_[i];
+        return (1.0f - u - v) * r.uv0 + u * r.uv1 + v * r.uv2;
+    }
+    float log2_density(std::size_t i, int set) const {
+        if (set == 0) return log2_density(i);
+        return i < second_.size() ? second_[i].log2_density : -INFINITY;
     }
     // 0.5 log2(texture-space area / world area) of triangle i, in units of the texture's extent:
     // Akenine-Moller et al. 2019's (eq. 34) triangle term of the ray cone's level of detail; -inf
@@ -60,6 +77,11 @@ private:
         glm::vec3 tangent, bitangent;
     };
     std::vector<Record> records_;
+    struct Second {
+        glm::vec2 uv0, uv1, uv2;
+        float log2_density;
+    };
+    std::vector<Second> second_;  // empty, or one per record
     using VertexTangents = std::array<glm::vec4, 3>;
     std::vector<VertexTangents> vertex_tangents_;  // empty, or one per record
 };
