@@ -307,6 +307,45 @@ TEST_F(TangentImport, BadTangentsAreRefusedOrReplaced) {
     }
 }
 
+TEST_F(TangentImport, DegenerateCoordinatesRenderFinite) {
+    // Every coordinate the same: no face has a mapping, every tangent is made up, none is NaN.
+    GltfFile file;
+    SceneDescription d = load_bumpy("flat.glb", mesh(file, kSquare, std::vector<glm::vec2>(4, glm::vec2(0.5f)), kSquareTriangles), file);
+    for (const glm::vec4& t : d.meshes[0].tangents) {
+        EXPECT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z) && std::abs(t.w) == 1.0f);
+        EXPECT_NEAR(glm::length(glm::vec3(t)), 1.0f, 1e-6f);
+        EXPECT_EQ(t.z, 0.0f);
+    }
+    test::view_from_above(d, 8, 2);
+    const test::RenderedFilm rendered = test::render_film(d, Integrator::wavefront);
+    EXPECT_EQ(rendered.result.counts.nonfinite_samples, 0u);
+    for (uint32_t p = 0; p < 64; ++p) EXPECT_TRUE(std::isfinite(rendered.film.pixel_mean(p).x)) << p;
+}
+
+TEST_F(TangentImport, ASharedMeshKeepsItsTangentsForItsInstances) {
+    // One mesh placed by two nodes, the second mirrored: stored once, with its object-space
+    // coordinates and tangents (instances place them at each hit).
+    GltfFile file;
+    Json j = mesh(file, kSquare, kSquareUvs, kSquareTriangles);
+    j["nodes"] = {{{"mesh", 0}}, {{"mesh", 0}, {"scale", {-1.0, 1.0, 1.0}}, {"translation", {10.0, 0.0, 0.0}}}};
+    j["scenes"][0]["nodes"] = {0, 1};
+    const SceneDescription d = load_bumpy("shared.glb", j, file);
+    ASSERT_EQ(d.prototypes.size(), 1u);
+    ASSERT_EQ(d.instances.size(), 2u);
+    const TriangleMesh& part = d.prototypes[0].parts[0];
+    EXPECT_EQ(part.uvs.size(), 4u);
+    ASSERT_EQ(part.tangents.size(), 4u);
+    for (const glm::vec4& t : part.tangents) EXPECT_EQ(t, glm::vec4(1, 0, 0, 1));
+    // The mirrored copy leans its normal towards its own +u, which the mirror sent to -x.
+    const Scene scene = build_scene(d);
+    const uint32_t first = scene.instances.first_id;
+    for (uint32_t k = 0; k < 2; ++k) {
+        const glm::vec3 n = mapped_normal(scene, first + 2 * k);
+        EXPECT_NEAR(n.x, k == 0 ? 0.48f : -0.48f, 1e-5f) << k;
+        EXPECT_NEAR(n.y, 0.36f, 1e-5f) << k;
+    }
+}
+
 TEST_F(TangentImport, NoNormalMapNoTangents) {
     GltfFile file;
     Json j = mesh(file, kSquare, kSquareUvs, kSquareTriangles, std::vector<glm::vec4>(4, glm::vec4(1, 0, 0, 1)));

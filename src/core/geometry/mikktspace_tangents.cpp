@@ -83,7 +83,9 @@ std::vector<glm::vec4> mikktspace_tangents(const std::vector<glm::vec3>& positio
     }
 
     // Corners welded into vertices, and each vertex split by the faces' handedness: a mirrored
-    // UV island meets its original along a seam whose two sides need opposite bitangents.
+    // UV island meets its original along a seam whose two sides need opposite bitangents. (The
+    // reference further splits a vertex's faces of one handedness into fans joined by shared
+    // edges; here they are one group, which differs only where such fans touch at a point.)
     std::unordered_map<CornerKey, uint32_t, CornerKeyHash> welded;
     std::vector<uint32_t> vertex_of(corners);
     for (std::size_t f = 0; f < triangles.size(); ++f)
