@@ -93,7 +93,9 @@ TEST(EmissionTexture, LightSeenDirectlyIsTheFactorTimesTheDecodedTexel) {
 struct FloorUnderTexturedLight {
     static constexpr float rho = 0.5f, le = 4.0f, s = 0.5f, h = 1.0f;
     static constexpr double px = 0.3;  // off centre, over the white half: a flipped texture is less
-    SceneDescription scene(int spp, bool textured) const {
+    // second_set: the texture reads TEXCOORD_1, which runs u the other way (u = (s - x) / 2s),
+    // while TEXCOORD_0 stays as downward_light has it.
+    SceneDescription scene(int spp, bool textured, bool second_set = false) const {
         SceneDescription d;
         Material floor, light;
         floor.name = "floor";
@@ -106,6 +108,10 @@ struct FloorUnderTexturedLight {
         }
         d.materials = {floor, light};
         d.meshes = {test::quad({-50, -50, 0}, {50, -50, 0}, {50, 50, 0}, {-50, 50, 0}, 0), downward_light(s, h)};
+        if (second_set) {
+            d.textures[0].coordinate_set = 1;
+            for (const glm::vec2& uv : d.meshes[1].uvs) d.meshes[1].second_uvs.push_back({1.0f - uv.x, uv.y});
+        }
         d.camera.eye = glm::vec3(float(px) + 0.3f, 0.0f, 0.2f);
         d.camera.look_at = glm::vec3(float(px), 0.0f, 0.0f);
         d.camera.up = glm::vec3(0, 0, 1);
@@ -117,7 +123,7 @@ struct FloorUnderTexturedLight {
     }
     // rho / pi times the irradiance at p: the integral over the light of L cos cos / r^2, by the
     // midpoint rule on a grid whose cells' edges hold the texture's kinks (u = 1/4 and 3/4).
-    static double expected(bool textured) {
+    static double expected(bool textured, bool second_set = false) {
         const int n = 400;
         double sum = 0.0;
         for (int j = 0; j < n; ++j)
@@ -125,7 +131,7 @@ struct FloorUnderTexturedLight {
                 const double u = (i + 0.5) / n, v = (j + 0.5) / n;
                 const double x = -s + 2.0 * s * u - px, y = -s + 2.0 * s * v;
                 const double r2 = x * x + y * y + double(h) * h;
-                sum += (textured ? black_then_white_at(u) : 1.0) * double(h) * double(h) / (r2 * r2);
+                sum += (textured ? black_then_white_at(second_set ? 1.0 - u : u) : 1.0) * double(h) * double(h) / (r2 * r2);
             }
         const double irradiance = le * sum * (2.0 * s) * (2.0 * s) / (double(n) * n);
         return rho / M_PI * irradiance;
@@ -212,6 +218,25 @@ TEST(EmissionTexture, FloorUnderAHalfBlackLightAgreesWithQuadratureByEveryStrate
     const Estimate e = rendered(plain);
     EXPECT_NEAR(e.mean, untextured, 5.0 * e.standard_error + 1e-4 * untextured);
     EXPECT_GT(std::fabs(e.mean - expected), 10.0 * e.standard_error);
+}
+
+TEST(EmissionTexture, ATextureOnTheSecondSetIsReadThereByLightSamplesAndHits) {
+    // The same light with its texture on TEXCOORD_1, mirrored: the floor point now lies under
+    // the light's dark half. Light samples (NEE) and BSDF-found hits (MIS) must both read set 1:
+    // each agrees with the mirrored quadrature, far from the set-0 value.
+    const FloorUnderTexturedLight f;
+    const double mirrored = f.expected(true, true), first_set = f.expected(true, false);
+    ASSERT_LT(mirrored, 0.8 * first_set);
+    for (const LightSampling lights : {LightSampling::nee, LightSampling::mis}) {
+        SceneDescription d = f.scene(1 << 14, true, true);
+        d.settings.estimator.light_sampling = lights;
+        const Estimate e = rendered(d);
+        std::printf("%s: %.6f +- %.6f (set 1 quadrature %.6f, set 0 %.6f)\n", name_of(lights), e.mean, e.standard_error, mirrored,
+                    first_set);
+        EXPECT_NEAR(e.mean, mirrored, 5.0 * e.standard_error + 1e-4 * mirrored)
+            << name_of(lights) << ": reproduce with FloorUnderTexturedLight::scene(16384, true, true)";
+        EXPECT_GT(std::fabs(e.mean - first_set), 10.0 * e.standard_error) << name_of(lights);
+    }
 }
 
 TEST(EmissionTexture, ImageIsTheSameBitsForAnySchedule) {

@@ -12,6 +12,7 @@
 #include <glm/matrix.hpp>
 
 #include "core/description/scene_description.h"
+#include "core/import/place_mesh.h"
 
 namespace wt::test {
 
@@ -96,6 +97,7 @@ inline SceneDescription flattened(const SceneDescription& d) {
             TriangleMesh placed = part;
             for (glm::vec3& v : placed.vertices) v = glm::vec3(k.transform * glm::dvec4(glm::dvec3(v), 1.0));
             for (glm::vec3& n : placed.normals) n = glm::vec3(glm::normalize(normal_matrix * glm::dvec3(n)));
+            for (glm::vec4& t : placed.tangents) t = placed_tangent(t, glm::dmat3(k.transform));
             if (mirrored)
                 for (auto& tri : placed.triangles) std::swap(tri[1], tri[2]);
             f.meshes.push_back(placed);

@@ -63,7 +63,8 @@ struct Material {
     // and its green one roughness (linear data, not colour).
     int32_t metallic_roughness_texture = -1;
     // A tangent-space normal map (glTF's normalTexture, linear data): RGB 2 c - 1 is the normal
-    // about the triangle's tangent frame (core/textures/texture_coordinates.h), x and y times
+    // about the mesh's vertex tangents (TriangleMesh::tangents) where it has them, else the
+    // triangle's tangent frame (core/textures/texture_coordinates.h), x and y times
     // normal_scale; it replaces the shading normal. Triangles with texture coordinates only.
     int32_t normal_texture = -1;
     float normal_scale = 1.0f;
@@ -113,6 +114,13 @@ struct TriangleMesh {
     // Texture coordinates, one per vertex (glTF's TEXCOORD_0; OBJ's vt with v flipped, so v = 0
     // is the image's top row in both), or empty. Read only when some material has a texture.
     std::vector<glm::vec2> uvs;
+    // glTF's TEXCOORD_1, one per vertex, read by the textures whose coordinate_set is 1; empty
+    // unless some material of the mesh has such a texture.
+    std::vector<glm::vec2> second_uvs;
+    // Normal-map tangents, one per vertex, as glTF's TANGENT: xyz unit, w = +1 or -1 the side of
+    // the bitangent cross(normal, xyz) w; w = 0 where a vertex has none (its triangle uses its
+    // own frame). Empty unless a normal-mapped material's mesh came with or was given them.
+    std::vector<glm::vec4> tangents;
 };
 
 // A named mesh that instances place (the scene file's "meshes"; a glTF mesh used by several

@@ -73,6 +73,8 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         h.array(mesh.vertices), h.array(mesh.triangles), h.array(mesh.normals);
         h.value(mesh.material), h.value(mesh.parallelogram);
         if (!mesh.uvs.empty()) h.array(mesh.uvs);
+        if (!mesh.tangents.empty()) h.array(mesh.tangents);
+        if (!mesh.second_uvs.empty()) h.array(mesh.second_uvs);
     }
     h.array(d.spheres);
     // Only when there are some: a scene without instances keeps the hash it had.
@@ -81,8 +83,11 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         for (const MeshPrototype& p : d.prototypes) {
             h.bytes(p.name.data(), p.name.size());
             h.word(p.parts.size());
-            for (const TriangleMesh& mesh : p.parts)
+            for (const TriangleMesh& mesh : p.parts) {
                 h.array(mesh.vertices), h.array(mesh.triangles), h.array(mesh.normals), h.value(mesh.material);
+                if (!mesh.tangents.empty()) h.array(mesh.tangents);
+                if (!mesh.second_uvs.empty()) h.array(mesh.second_uvs);
+            }
         }
         h.word(d.instances.size());
         for (const InstanceDescription& k : d.instances) h.value(k.prototype), h.value(k.transform);
@@ -92,6 +97,7 @@ uint64_t scene_content_hash(const SceneDescription& d) {
         h.word(d.textures.size());
         for (const TextureImage& t : d.textures) {
             h.value(t.srgb), h.value(t.wrap_s), h.value(t.wrap_t), h.value(t.offset), h.value(t.scale), h.value(t.rotation);
+            if (t.coordinate_set != 0) h.value(t.coordinate_set);
             h.word(uint64_t(t.texels->width)), h.word(uint64_t(t.texels->height)), h.array(t.texels->rgba);
         }
     }

@@ -7,10 +7,12 @@
 
 #include <cmath>
 #include <cstring>
+#include <unordered_map>
 #include <unordered_set>
 
 #include <tiny_gltf.h>
 
+#include "core/geometry/mikktspace_tangents.h"
 #include "core/import/gltf_accessor.h"
 #include "core/import/gltf_lights.h"
 #include "core/import/gltf_load.h"
@@ -43,6 +45,12 @@ public:
         for (std::size_t m = 0; m < users.size(); ++m)
             if (users[m] > 1) shared_index_[m] = mesh_.shared_count++;
         shared_read_.assign(mesh_.shared_count, false);
+        // The materials first: which coordinates and tangents a primitive needs depends on them.
+        GltfTextures textures(path_, model_, mesh_.textures, use_.file_materials);
+        for (std::size_t i = 0; i < model_.materials.size(); ++i) {
+            const tinygltf::Material& m = model_.materials[i];
+            mesh_.materials.push_back(map_gltf_material(m, m.name.empty() ? "material " + std::to_string(i) : m.name, textures));
+        }
         walk_gltf_nodes(path_, model_, roots, [&](int index, const tinygltf::Node& node, const glm::dmat4& world) {
             place_node(index, node, world);
         });
@@ -55,11 +63,6 @@ public:
             mesh_.notes.push_back("some primitives have no NORMAL: the file's normals are not used");
         if (!any_material_) mesh_.triangle_materials.clear();
         if (!any_have_uvs_) mesh_.uvs.clear();
-        GltfTextures textures(path_, model_, mesh_.textures, use_.file_materials);
-        for (std::size_t i = 0; i < model_.materials.size(); ++i) {
-            const tinygltf::Material& m = model_.materials[i];
-            mesh_.materials.push_back(map_gltf_material(m, m.name.empty() ? "material " + std::to_string(i) : m.name, textures));
-        }
         return std::move(mesh_);
     }
 
@@ -113,22 +116,22 @@ private:
         });
     }
 
-    // TEXCOORD_0 (FLOAT, or normalised UNSIGNED_BYTE / UNSIGNED_SHORT), appended; a primitive
-    // without it gets (0, 0), and a file where none has it stores none.
-    void read_texture_coordinates(const tinygltf::Primitive& primitive, const std::string& where, std::size_t count) {
-        const std::size_t first = mesh_.uvs.size();
-        mesh_.uvs.resize(first + count, glm::vec2(0.0f));
-        const auto uv = primitive.attributes.find("TEXCOORD_0");
-        if (uv == primitive.attributes.end()) return;
-        any_have_uvs_ = true;
+    // TEXCOORD_0 or TEXCOORD_1 (`attribute`; FLOAT, or normalised UNSIGNED_BYTE / UNSIGNED_SHORT),
+    // appended to `out`; a primitive without it gets (0, 0). Returns whether the primitive has it.
+    bool read_texture_coordinates(const tinygltf::Primitive& primitive, const std::string& where, std::size_t count,
+                                  const std::string& attribute, std::vector<glm::vec2>& out) const {
+        const std::size_t first = out.size();
+        out.resize(first + count, glm::vec2(0.0f));
+        const auto uv = primitive.attributes.find(attribute);
+        if (uv == primitive.attributes.end()) return false;
         const GltfAccessor uvs(model_, uv->second, TINYGLTF_TYPE_VEC2,
                                {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                               accessor_name(uv->second, "TEXCOORD_0", where));
-        if (uvs.count() != count) fail(where + ": TEXCOORD_0 and POSITION counts differ");
+                               accessor_name(uv->second, attribute, where));
+        if (uvs.count() != count) fail(where + ": " + attribute + " and POSITION counts differ");
         const int type = uvs.component_type();
         uvs.for_each([&](std::size_t i, const unsigned char* bytes) {
-            glm::vec2& t = mesh_.uvs[first + i];
+            glm::vec2& t = out[first + i];
             if (type == TINYGLTF_COMPONENT_TYPE_FLOAT) {
                 std::memcpy(&t, bytes, sizeof t);
             } else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
@@ -141,6 +144,88 @@ private:
             if (!std::isfinite(t.x) || !std::isfinite(t.y))
                 throw MeshFileError(uvs.context() + ": element " + std::to_string(i) + " is not finite");
         });
+        return true;
+    }
+
+    // The primitive's material as mapped (the file's own), or null.
+    const Material* material_of(const tinygltf::Primitive& primitive) const {
+        if (primitive.material < 0 || std::size_t(primitive.material) >= mesh_.materials.size()) return nullptr;
+        return &mesh_.materials[std::size_t(primitive.material)].material;
+    }
+
+    // The name of a texture of the primitive's material that reads TEXCOORD_1 ("FILE:
+    // baseColorTexture of \"panel\""), or empty: only then is TEXCOORD_1 read.
+    std::string second_set_texture(const tinygltf::Primitive& primitive) const {
+        const Material* m = material_of(primitive);
+        if (!m) return "";
+        for (int32_t t : {m->color_texture, m->metallic_roughness_texture, m->normal_texture, m->alpha_texture, m->emission_texture})
+            if (t >= 0 && mesh_.textures[std::size_t(t)].coordinate_set == 1) return mesh_.textures[std::size_t(t)].name;
+        return "";
+    }
+
+    // The file's TANGENT (FLOAT VEC4, glTF 2.0 3.7.2.1), one per vertex from `first`; false,
+    // with a note, where some element is unusable (not finite, zero, or w not a sign), so that
+    // the primitive's tangents are made instead of any NaN reaching a shading normal.
+    bool read_file_tangents(int index, const std::string& where, std::size_t first, std::size_t count) {
+        const GltfAccessor tangents(model_, index, TINYGLTF_TYPE_VEC4, {TINYGLTF_COMPONENT_TYPE_FLOAT},
+                                    accessor_name(index, "TANGENT", where));
+        if (tangents.count() != count) fail(where + ": TANGENT and POSITION counts differ");
+        std::size_t unusable = 0;
+        tangents.for_each([&](std::size_t i, const unsigned char* bytes) {
+            glm::vec4 t;
+            std::memcpy(&t, bytes, sizeof t);
+            const float length = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
+            if (!(length > 0.0f) || !std::isfinite(length) || !(t.w != 0.0f) || !std::isfinite(t.w)) ++unusable;
+            else mesh_.tangents[first + i] = glm::vec4(glm::vec3(t) / length, t.w > 0.0f ? 1.0f : -1.0f);
+        });
+        if (unusable == 0) return true;
+        mesh_.notes.push_back(tangents.context() + ": " + std::to_string(unusable) +
+                              " TANGENT elements are not finite, zero or have w = 0: MikkTSpace tangents are used instead");
+        return false;
+    }
+
+    // A normal-mapped primitive's tangents, its vertices `first` to `first + count` and its
+    // triangles from `first_triangle`: the file's, else MikkTSpace's (the specification's
+    // SHOULD). Those are per corner: a vertex whose corners got different ones (a seam between
+    // mirrored halves) is split, its copies appended to the primitive.
+    void add_tangents(const tinygltf::Primitive& primitive, const std::string& where, std::size_t first, std::size_t count,
+                      std::size_t first_triangle) {
+        mesh_.tangents.resize(mesh_.positions.size(), glm::vec4(0.0f));
+        const auto tangent = primitive.attributes.find("TANGENT");
+        if (tangent != primitive.attributes.end() && read_file_tangents(tangent->second, where, first, count)) return;
+        const std::vector<std::array<uint32_t, 3>> triangles(mesh_.triangles.begin() + std::ptrdiff_t(first_triangle),
+                                                             mesh_.triangles.end());
+        // From the coordinates the normal texture reads (glTF 2.0, 3.7.2.1).
+        const int32_t normal_texture = material_of(primitive)->normal_texture;
+        const bool second = mesh_.textures[std::size_t(normal_texture)].coordinate_set == 1;
+        const std::vector<glm::vec4> corners =
+            mikktspace_tangents(mesh_.positions, mesh_.normals, second ? mesh_.second_uvs : mesh_.uvs, triangles);
+        std::vector<bool> given(count, false);
+        std::unordered_map<uint32_t, std::vector<uint32_t>> copies;
+        for (std::size_t t = 0; t < triangles.size(); ++t)
+            for (int c = 0; c < 3; ++c) {
+                const uint32_t v = triangles[t][c];
+                const glm::vec4& g = corners[3 * t + c];
+                if (!given[v - first]) {
+                    given[v - first] = true;
+                    mesh_.tangents[v] = g;
+                    continue;
+                }
+                if (mesh_.tangents[v] == g) continue;
+                uint32_t copy = UINT32_MAX;
+                for (uint32_t k : copies[v])
+                    if (mesh_.tangents[k] == g) copy = k;
+                if (copy == UINT32_MAX) {
+                    copy = uint32_t(mesh_.positions.size());
+                    mesh_.positions.push_back(mesh_.positions[v]);
+                    if (!mesh_.normals.empty()) mesh_.normals.push_back(mesh_.normals[v]);
+                    mesh_.uvs.push_back(mesh_.uvs[v]);
+                    if (!mesh_.second_uvs.empty()) mesh_.second_uvs.push_back(mesh_.second_uvs[v]);
+                    mesh_.tangents.push_back(g);
+                    copies[v].push_back(copy);
+                }
+                mesh_.triangles[first_triangle + t][std::size_t(c)] = copy;
+            }
     }
 
     void read_primitive(const tinygltf::Primitive& primitive, const std::string& where, const glm::dmat4& world) {
@@ -173,7 +258,15 @@ private:
             read_vec3s(normals, mesh_.normals);
         }
         if (!all_have_normals_) std::vector<glm::vec3>().swap(mesh_.normals);
-        read_texture_coordinates(primitive, where, positions.count());
+        const bool has_uvs = read_texture_coordinates(primitive, where, positions.count(), "TEXCOORD_0", mesh_.uvs);
+        any_have_uvs_ |= has_uvs;
+        // TEXCOORD_1 only where a texture reads it; missing there is an error, not a silently
+        // wrong image (every texel read at (0, 0)).
+        if (const std::string reader = second_set_texture(primitive); !reader.empty()) {
+            mesh_.second_uvs.resize(first, glm::vec2(0.0f));
+            if (!read_texture_coordinates(primitive, where, positions.count(), "TEXCOORD_1", mesh_.second_uvs))
+                fail(where + ": no TEXCOORD_1, which " + reader.substr(path_.size() + 2) + " reads");
+        }
 
         const std::size_t first_triangle = mesh_.triangles.size();
         PrimitiveTriangles triangles(PrimitiveMode(mode), mesh_.triangles);
@@ -190,7 +283,17 @@ private:
         any_material_ |= has_material;
         mesh_.triangle_materials.resize(mesh_.triangles.size(),
                                         has_material ? uint32_t(primitive.material) : ImportedMesh::kNoMaterial);
-        mesh_.pieces.push_back({first, positions.count(), world});
+        // Only under a normal map (a scene without stores none). Without coordinates a normal
+        // map reads one texel everywhere and has no frame to turn.
+        const Material* material = use_.file_materials ? material_of(primitive) : nullptr;
+        if (material && material->normal_texture >= 0 &&
+            (mesh_.textures[std::size_t(material->normal_texture)].coordinate_set == 1 || has_uvs))
+            add_tangents(primitive, where, first, positions.count(), first_triangle);
+        if (!mesh_.tangents.empty()) mesh_.tangents.resize(mesh_.positions.size(), glm::vec4(0.0f));
+        if (!mesh_.second_uvs.empty()) mesh_.second_uvs.resize(mesh_.positions.size(), glm::vec2(0.0f));
+        if (mesh_.positions.size() > UINT32_MAX)
+            fail(where + ": the instances come to more than 2^32 - 1 vertices (the renderer's indices are 32-bit)");
+        mesh_.pieces.push_back({first, mesh_.positions.size() - first, world});
     }
 
     // TRIANGLES takes them three by three; a strip or fan needs 3 to make its first triangle.

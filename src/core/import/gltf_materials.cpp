@@ -75,23 +75,23 @@ ImportedMaterial map_gltf_material(const tinygltf::Material& m, const std::strin
     out.material.name = m.name;
     const tinygltf::TextureInfo& mr_texture = pbr.metallicRoughnessTexture;
     const MaterialType type = out.material.type;
-    // Each texture on TEXCOORD_0 (its KHR_texture_transform included) where the material has the
-    // parameter it multiplies; otherwise a note.
+    // Each texture on TEXCOORD_0 or TEXCOORD_1 (its KHR_texture_transform included, whose texCoord
+    // overrides the texture info's) where the material has the parameter it multiplies; otherwise a note.
     const auto map_texture = [&](const auto& info, bool applies, bool srgb, const std::string& field) {
         if (info.index < 0) return -1;
         if (!applies) {
             out.unmapped.push_back(field);
             return -1;
         }
+        int set = info.texCoord;
         const auto transform = info.extensions.find("KHR_texture_transform");
-        const bool transform_coordinates = transform != info.extensions.end() && transform->second.Has("texCoord") &&
-                                           transform->second.Get("texCoord").GetNumberAsInt() != 0;
-        if (info.texCoord != 0 || transform_coordinates) {
-            out.unmapped.push_back(field + " on TEXCOORD_" + std::to_string(transform_coordinates ? 1 : info.texCoord) +
-                                   " (only TEXCOORD_0 is read)");
+        if (transform != info.extensions.end() && transform->second.Has("texCoord") && transform->second.Get("texCoord").IsNumber())
+            set = transform->second.Get("texCoord").GetNumberAsInt();
+        if (set != 0 && set != 1) {
+            out.unmapped.push_back(field + " on TEXCOORD_" + std::to_string(set) + " (only TEXCOORD_0 and TEXCOORD_1 are read)");
             return -1;
         }
-        return textures.add(info.index, info.extensions, srgb, name, field);
+        return textures.add(info.index, info.extensions, srgb, name, field, set);
     };
     // The base colour texture multiplies the factor (glTF 2.0, 3.9.2): a principled material's
     // base colour, or the F0 of the conductor metallic 1 loads as; glass has no colour.

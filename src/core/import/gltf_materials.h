@@ -15,7 +15,7 @@ namespace wt {
 // KHR_materials_ior, else 1.5). Otherwise the metallic-roughness material itself (principled,
 // core/materials/principled.h) from baseColorFactor, metallicFactor, roughnessFactor and the
 // ior, which with metallic 1 is the conductor of F0 baseColorFactor. emissiveFactor (times
-// emissiveStrength) is the emission. baseColorTexture (on TEXCOORD_0) multiplies the base
+// emissiveStrength) is the emission. baseColorTexture (on TEXCOORD_0 or 1) multiplies the base
 // colour, added to `textures`; `name` is the material's, for errors. Other textures, alpha and
 // partial transmission are recorded as not mapped; doubleSided is not read (both sides of every
 // surface scatter, as in Cycles).

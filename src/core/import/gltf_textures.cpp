@@ -64,7 +64,7 @@ std::shared_ptr<const TextureTexels> GltfTextures::decode(int index, const std::
 }
 
 int GltfTextures::add(int index, const tinygltf::ExtensionMap& extensions, bool srgb, const std::string& material,
-                      const std::string& field) {
+                      const std::string& field, int coordinate_set) {
     if (!read_) return -1;
     const std::string context = path_ + ": material \"" + material + "\": " + field;
     if (index < 0 || std::size_t(index) >= model_.textures.size())
@@ -74,6 +74,7 @@ int GltfTextures::add(int index, const tinygltf::ExtensionMap& extensions, bool 
     out.texels = decode(texture.source, context);
     out.name = path_ + ": " + field + " of \"" + material + "\"";
     out.srgb = srgb;
+    out.coordinate_set = coordinate_set;
     if (texture.sampler >= 0) {
         if (std::size_t(texture.sampler) >= model_.samplers.size())
             throw MeshFileError(context + ": sampler " + std::to_string(texture.sampler) + " does not exist");

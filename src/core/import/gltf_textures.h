@@ -26,8 +26,9 @@ public:
     // material and the field ("FILE: material \"panel\": baseColorTexture: image 0 (wood.png):
     // ...") for a texture or image that does not exist, cannot be read or is too large.
     const std::string& path() const { return path_; }
+    // coordinate_set: the TEXCOORD_n it reads (TextureImage::coordinate_set).
     int add(int index, const tinygltf::ExtensionMap& extensions, bool srgb, const std::string& material,
-            const std::string& field);
+            const std::string& field, int coordinate_set = 0);
 
 private:
     std::shared_ptr<const TextureTexels> decode(int image, const std::string& context);

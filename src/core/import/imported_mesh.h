@@ -12,6 +12,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "core/description/scene_description.h"
 
@@ -54,6 +55,10 @@ struct ImportedMesh {
     std::vector<glm::vec3> normals;  // the file's vertex normals: empty, or one per position
     // Texture coordinates (v = 0 the image's top row): empty, or one per position.
     std::vector<glm::vec2> uvs;
+    // TEXCOORD_1 (TriangleMesh::second_uvs): empty, or one per position.
+    std::vector<glm::vec2> second_uvs;
+    // Normal-map tangents (TriangleMesh::tangents): empty, or one per position.
+    std::vector<glm::vec4> tangents;
     std::vector<std::array<uint32_t, 3>> triangles;
     // Per triangle, an index into `materials`, or kNoMaterial; empty when the file has none.
     std::vector<uint32_t> triangle_materials;

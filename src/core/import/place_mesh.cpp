@@ -34,7 +34,22 @@ bool transform_normals(ImportedMesh& mesh, const MeshPiece& piece, const glm::dm
     return all_valid;
 }
 
+void transform_tangents(ImportedMesh& mesh, const MeshPiece& piece, const glm::dmat4& m) {
+    const std::size_t end = piece.first_vertex + piece.vertex_count;
+    for (std::size_t v = piece.first_vertex; v < end; ++v) mesh.tangents[v] = placed_tangent(mesh.tangents[v], glm::dmat3(m));
+}
+
 }  // namespace
+
+// The bitangent cross(n, t) w has its side flipped by a mirroring map (normals going through the
+// inverse transpose): w changes sign with the determinant.
+glm::vec4 placed_tangent(const glm::vec4& t, const glm::dmat3& linear) {
+    if (t.w == 0.0f) return t;
+    const glm::dvec3 d = linear * glm::dvec3(t.x, t.y, t.z);
+    const double length = glm::length(d);
+    if (!(length > 0.0) || !std::isfinite(length)) return glm::vec4(0.0f);
+    return glm::vec4(glm::vec3(d / length), glm::determinant(linear) < 0.0 ? -t.w : t.w);
+}
 
 std::size_t place_mesh(ImportedMesh& mesh, const glm::dmat4& scene_transform, NormalsMode normals) {
     if (normals != NormalsMode::file) mesh.normals.clear();
@@ -46,6 +61,7 @@ std::size_t place_mesh(ImportedMesh& mesh, const glm::dmat4& scene_transform, No
         const glm::dmat4 m = scene_transform * piece.transform;
         if (m != glm::dmat4(1.0)) transform_positions(mesh, piece, m);
         if (!mesh.normals.empty()) normals_valid &= transform_normals(mesh, piece, m);
+        if (!mesh.tangents.empty() && m != glm::dmat4(1.0)) transform_tangents(mesh, piece, m);
         mirrored[p] = glm::determinant(glm::dmat3(m)) < 0.0;
         any_mirrored |= mirrored[p];
     }

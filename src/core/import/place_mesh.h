@@ -4,7 +4,9 @@
 
 #include <cstddef>
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
 
 #include "core/import/imported_mesh.h"
 
@@ -21,7 +23,12 @@ enum class NormalsMode {
 // bit), normals through its inverse transpose and are renormalised. A piece whose transform
 // mirrors (negative determinant) has its triangles' winding reversed, so the front face stays
 // the side its normals point to. Returns how many zero-area triangles were dropped (judged after
-// the transform, as triangle_size.h does for the scene's own triangles).
+// the transform, as triangle_size.h does for the scene's own triangles). Tangents
+// (TriangleMesh::tangents) go through placed_tangent().
 std::size_t place_mesh(ImportedMesh& mesh, const glm::dmat4& scene_transform, NormalsMode normals);
+
+// A tangent through a linear map: its direction renormalised, w's sign flipped where the map
+// mirrors; one that comes out without a direction is none (w = 0, the triangle's own frame).
+glm::vec4 placed_tangent(const glm::vec4& t, const glm::dmat3& linear);
 
 }  // namespace wt

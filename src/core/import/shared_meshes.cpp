@@ -25,9 +25,11 @@ std::vector<ImportedMesh> take_shared_meshes(ImportedMesh& mesh) {
             new_index[v] = uint32_t(out.positions.size());
             out.positions.push_back(mesh.positions[v]);
             if (!mesh.normals.empty()) out.normals.push_back(mesh.normals[v]);
-            // Texture coordinates go with their vertices too: a shared mesh's textures (an emitting
-            // one's emission texture, flattened per node) read them.
+            // Texture coordinates and tangents go with their vertices too: a shared mesh's textures
+            // (an emitting one's emission texture, flattened per node) read them.
             if (!mesh.uvs.empty()) out.uvs.push_back(mesh.uvs[v]);
+            if (!mesh.second_uvs.empty()) out.second_uvs.push_back(mesh.second_uvs[v]);
+            if (!mesh.tangents.empty()) out.tangents.push_back(mesh.tangents[v]);
         }
     }
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {

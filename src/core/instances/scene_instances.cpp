@@ -56,6 +56,14 @@ void build_instances(const SceneDescription& d, uint32_t first_id, SceneInstance
                 throw std::invalid_argument("build_scene: mesh \"" + proto.name + "\" has a part with " +
                                             std::to_string(part.uvs.size()) + " texture coordinates for " +
                                             std::to_string(part.vertices.size()) + " vertices");
+            if (!part.second_uvs.empty() && part.second_uvs.size() != part.vertices.size())
+                throw std::invalid_argument("build_scene: mesh \"" + proto.name + "\" has a part with " +
+                                            std::to_string(part.second_uvs.size()) + " second texture coordinates for " +
+                                            std::to_string(part.vertices.size()) + " vertices");
+            if (!part.tangents.empty() && part.tangents.size() != part.vertices.size())
+                throw std::invalid_argument("build_scene: mesh \"" + proto.name + "\" has a part with " +
+                                            std::to_string(part.tangents.size()) + " tangents for " +
+                                            std::to_string(part.vertices.size()) + " vertices");
             if (d.materials[part.material].is_emissive())
                 throw std::invalid_argument("build_scene: mesh \"" + proto.name +
                                             "\" emits light; the light table holds the scene's own triangles only");

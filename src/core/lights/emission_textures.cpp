@@ -13,11 +13,13 @@ void EmissionTextures::push(int32_t texture, uint32_t triangle, const TextureCoo
     rows_.resize(k + 1);  // the untextured emitters before the first textured one get empty rows
     if (texture < 0 || std::size_t(texture) >= textures.size()) return;
     Row& row = rows_[k];
-    // The vertices' coordinates as TextureCoordinateTable::at gives them (exactly: the other
-    // weights are zero), so a sample interpolates them with a hit's arithmetic.
+    // The vertices' coordinates in the set the texture reads (TEXCOORD_0 or _1), as
+    // TextureCoordinateTable::at gives them (exactly: the other weights are zero), so a sample
+    // interpolates them with a hit's arithmetic.
+    const int set = textures[std::size_t(texture)].coordinate_set();
     if (triangle < coordinates.size())
-        row.uv0 = coordinates.at(triangle, 0.0f, 0.0f), row.uv1 = coordinates.at(triangle, 1.0f, 0.0f),
-        row.uv2 = coordinates.at(triangle, 0.0f, 1.0f);
+        row.uv0 = coordinates.at(triangle, 0.0f, 0.0f, set), row.uv1 = coordinates.at(triangle, 1.0f, 0.0f, set),
+        row.uv2 = coordinates.at(triangle, 0.0f, 1.0f, set);
     const auto known = std::find(scene_texture_.begin(), scene_texture_.end(), texture);
     if (known != scene_texture_.end()) {
         row.texture = int32_t(known - scene_texture_.begin());

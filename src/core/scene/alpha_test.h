@@ -10,9 +10,9 @@ namespace wt {
 struct Scene;
 
 // True if the hit on scene primitive `prim` at barycentrics (u, v) counts. alpha is the
-// material's alpha_factor times its alpha texture's alpha at the hit's TEXCOORD_0, read at
-// level 0 (bilinear), whichever ray asks, so a camera ray and a shadow ray see the same
-// cut-out. OPAQUE: always (glTF: alpha is ignored). MASK: alpha >= alpha_cutoff. BLEND: with
+// material's alpha_factor times its alpha texture's alpha at the hit's coordinates (the set
+// that texture reads), read at level 0 (bilinear), whichever ray asks, so a camera ray and a
+// shadow ray see the same cut-out. OPAQUE: always (glTF: alpha is ignored). MASK: alpha >= alpha_cutoff. BLEND: with
 // probability alpha, by a coin drawn from hash(ray_key, prim) (stochastic transparency, as
 // pbrt-v4's alpha textures between 0 and 1): the same ray meeting the same triangle always
 // decides alike, so the decision depends on nothing but the ray. An instanced triangle reads

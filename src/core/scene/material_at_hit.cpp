@@ -1,5 +1,6 @@
 #include "core/scene/material_at_hit.h"
 
+#include <array>
 #include <cmath>
 
 #include "core/sampling/sampling.h"
@@ -64,16 +65,22 @@ CoordinateRow coordinate_row(const Scene& scene, const Hit& hit) {
     return c;
 }
 
-// 0.5 log2(texture area / world area) of the hit's triangle (TextureCoordinateTable::
-// log2_density): an instanced triangle's is its object-space density less half the log2 of how
-// much the placement scales its area.
-float log2_density(const CoordinateRow& c) {
-    const float density = c.table->log2_density(c.row);
+// 0.5 log2(texture area / world area) of the hit's triangle in coordinate set `set`
+// (TextureCoordinateTable::log2_density): an instanced triangle's is its object-space density
+// less half the log2 of how much the placement scales its area.
+float log2_density(const CoordinateRow& c, int set) {
+    const float density = c.table->log2_density(c.row, set);
     if (!c.instance) return density;
     const glm::vec3 e1 = c.mesh->triangles.edge1(uint32_t(c.row)), e2 = c.mesh->triangles.edge2(uint32_t(c.row));
     const float object_area = glm::length(glm::cross(e1, e2));
     const float world_area = glm::length(glm::cross(c.instance->to_world.vector(e1), c.instance->to_world.vector(e2)));
     return object_area > 0.0f && world_area > 0.0f ? density - 0.5f * std::log2(world_area / object_area) : density;
+}
+
+// -1 where a placement mirrors (its linear part's determinant is negative), else 1.
+float mirror_sign(const AffineTransform& a) {
+    const glm::vec3 r0(a.m[0][0], a.m[0][1], a.m[0][2]), r1(a.m[1][0], a.m[1][1], a.m[1][2]), r2(a.m[2][0], a.m[2][1], a.m[2][2]);
+    return glm::dot(r0, glm::cross(r1, r2)) < 0.0f ? -1.0f : 1.0f;
 }
 
 }  // namespace
@@ -85,15 +92,18 @@ void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, c
     // Level of detail of a ray cone (Akenine-Moller et al. 2019, eq. 34): the triangle's texel
     // density plus log2 of the cone's width over the cosine of its incidence, plus the
     // texture's own term (added per texture below). Spheres and non-camera rays read level 0.
-    float lod = -INFINITY;
+    // Each texture reads its own coordinate set (TextureImage::coordinate_set), with that set's density.
+    float cone = -INFINITY;
     if (from_camera && row.table) {
         const float width = scene.cone_width0 + scene.cone_spread * hit.t;
         const float cosine = std::fabs(glm::dot(ray.direction, surface.normal));
-        lod = log2_density(row) + std::log2(width / cosine);
+        cone = std::log2(width / cosine);
     }
     const auto lookup = [&](int32_t texture) {
         const MipPyramid& t = scene.textures[std::size_t(texture)];
-        return texture_lookup(t, t.transformed(uv), lod + t.log2_texel_scale());
+        const int set = row.table ? t.coordinate_set() : 0;
+        const float lod = cone == -INFINITY ? -INFINITY : log2_density(row, set) + cone;
+        return texture_lookup(t, t.transformed(set == 0 ? uv : row.table->at(row.row, hit.u, hit.v, set)), lod + t.log2_texel_scale());
     };
     if (textured.color_texture >= 0) {
         const glm::vec4 c = lookup(textured.color_texture);
@@ -107,7 +117,23 @@ void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, c
     if (textured.normal_texture >= 0 && row.table) {
         // An instanced triangle's tangents are in object space; tangents move with the placement.
         glm::vec3 t = row.table->tangent(row.row), b = row.table->bitangent(row.row);
-        if (row.instance) t = row.instance->to_world.vector(t), b = row.instance->to_world.vector(b);
+        if (const std::array<glm::vec4, 3>* vertex = row.table->vertex_tangents(row.row)) {
+            // The file's or MikkTSpace's, interpolated like the normals (glTF 2.0, 3.7.2.1), the
+            // bitangent cross(N, t) w. An instance places each vertex's and renormalises it, as
+            // a flattened copy's are placed (a non-uniform scale changes their lengths unequally);
+            // a mirroring placement turns the cross product the other way round, so w flips.
+            glm::vec3 corner[3];
+            for (int c = 0; c < 3; ++c) {
+                corner[c] = glm::vec3((*vertex)[c]);
+                if (row.instance) corner[c] = glm::normalize(row.instance->to_world.vector(corner[c]));
+            }
+            t = (1.0f - hit.u - hit.v) * corner[0] + hit.u * corner[1] + hit.v * corner[2];
+            float w = (1.0f - hit.u - hit.v) * (*vertex)[0].w + hit.u * (*vertex)[1].w + hit.v * (*vertex)[2].w;
+            if (row.instance) w *= mirror_sign(row.instance->to_world);
+            b = (w < 0.0f ? -1.0f : 1.0f) * glm::cross(surface.shading_normal, t);
+        } else if (row.instance) {
+            t = row.instance->to_world.vector(t), b = row.instance->to_world.vector(b);
+        }
         apply_normal_map(t, b, lookup(textured.normal_texture), textured, surface);
     }
     // glTF 2.0 (3.9.5): the emissive texture's RGB times emissiveFactor. Every ray but the

@@ -135,6 +135,12 @@ Scene build_scene(const SceneDescription& description) {
         if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.vertices.size())
             throw std::invalid_argument("build_scene: mesh " + std::to_string(k) + " has " + std::to_string(mesh.uvs.size()) +
                                         " texture coordinates for " + std::to_string(mesh.vertices.size()) + " vertices");
+        if (!mesh.second_uvs.empty() && mesh.second_uvs.size() != mesh.vertices.size())
+            throw std::invalid_argument("build_scene: mesh " + std::to_string(k) + " has " + std::to_string(mesh.second_uvs.size()) +
+                                        " second texture coordinates for " + std::to_string(mesh.vertices.size()) + " vertices");
+        if (!mesh.tangents.empty() && mesh.tangents.size() != mesh.vertices.size())
+            throw std::invalid_argument("build_scene: mesh " + std::to_string(k) + " has " + std::to_string(mesh.tangents.size()) +
+                                        " tangents for " + std::to_string(mesh.vertices.size()) + " vertices");
         if (!as_parallelogram(mesh)) continue;
         scene.triangles.push_parallelogram(mesh.vertices[0], mesh.vertices[1], mesh.vertices[3], mesh.material);
         if (smooth) scene.shading_normals.push_flat();

@@ -91,11 +91,15 @@ void split_by_material(const ImportedMesh& mesh, const std::vector<uint32_t>& ou
         TriangleMesh part;
         part.material = ours[g];
         const bool uvs = !mesh.uvs.empty() && materials[part.material].has_textures();
+        const bool tangents = uvs && !mesh.tangents.empty() && materials[part.material].normal_texture >= 0;
+        const bool second_uvs = uvs && !mesh.second_uvs.empty();
         for (uint32_t v : used) {
             remap[v] = uint32_t(part.vertices.size());
             part.vertices.push_back(mesh.positions[v]);
             if (!mesh.normals.empty()) part.normals.push_back(mesh.normals[v]);
             if (uvs) part.uvs.push_back(mesh.uvs[v]);
+            if (tangents) part.tangents.push_back(mesh.tangents[v]);
+            if (second_uvs) part.second_uvs.push_back(mesh.second_uvs[v]);
         }
         for (uint32_t t : triangles_of[g]) {
             const auto& tri = mesh.triangles[t];
@@ -113,6 +117,7 @@ TriangleMesh placed_copy(const TriangleMesh& part, const glm::dmat4& m) {
     const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(m)));
     for (glm::vec3& v : out.vertices) v = glm::vec3(m * glm::dvec4(glm::dvec3(v), 1.0));
     for (glm::vec3& n : out.normals) n = glm::vec3(glm::normalize(normal_matrix * glm::dvec3(n)));
+    for (glm::vec4& t : out.tangents) t = placed_tangent(t, glm::dmat3(m));
     if (glm::determinant(glm::dmat3(m)) < 0.0)
         for (auto& tri : out.triangles) std::swap(tri[1], tri[2]);
     return out;

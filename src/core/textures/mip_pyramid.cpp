@@ -56,7 +56,7 @@ MipLevel box_downsample(const MipLevel& source) {
 }
 
 MipPyramid::MipPyramid(const TextureImage& image)
-    : name_(image.name), wrap_s_(image.wrap_s), wrap_t_(image.wrap_t) {
+    : name_(image.name), wrap_s_(image.wrap_s), wrap_t_(image.wrap_t), coordinate_set_(image.coordinate_set) {
     MipLevel base;
     base.width = image.texels->width;
     base.height = image.texels->height;

@@ -42,6 +42,7 @@ public:
     // 0.5 log2(width * height) of level 0, plus the transform's 0.5 log2 |det|: the texture's
     // term of the ray cone's level of detail.
     float log2_texel_scale() const { return log2_texel_scale_; }
+    int coordinate_set() const { return coordinate_set_; }  // TextureImage::coordinate_set
     // A hit's coordinates through the texture's transform (TextureImage::offset, ...); the same
     // bits without one.
     glm::vec2 transformed(glm::vec2 uv) const {
@@ -57,6 +58,7 @@ private:
     std::shared_ptr<const std::vector<MipLevel>> levels_;
     TextureWrap wrap_s_ = TextureWrap::repeat, wrap_t_ = TextureWrap::repeat;
     float log2_texel_scale_ = 0.0f;
+    int coordinate_set_ = 0;
     bool transformed_ = false;
     glm::vec3 row0_{1.0f, 0.0f, 0.0f}, row1_{0.0f, 1.0f, 0.0f};  // the affine map's two rows
 };

@@ -31,6 +31,9 @@ struct TextureImage {
     // rotation (radians) turning (1, 0) towards (0, -1) as the extension defines it.
     glm::vec2 offset{0.0f}, scale{1.0f};
     float rotation = 0.0f;
+    // Which coordinates it reads: 0 (glTF's TEXCOORD_0, OBJ's vt) or 1 (TEXCOORD_1, where a
+    // textureInfo's texCoord, or KHR_texture_transform's, says so).
+    int coordinate_set = 0;
 };
 
 }  // namespace wt
