@@ -86,6 +86,18 @@ protected:
 // Seen from above, the pixels that see one half of a half-black, half-white texture alone
 // (columns 0-1 and 14-15, texture_render_test says why) have exactly the bits of the same scene
 // rendered untextured in that colour; and the image is the same for every schedule.
+// Seen from above with no other light, a square emitting through the half-black texture: its
+// left columns 0 exactly, its right ones `white` within float rounding.
+void expect_emitted_halves(SceneDescription d, double white) {
+    test::view_from_above(d, 16, 4);
+    d.lights.clear();
+    const Film film = test::render_film(d, Integrator::wavefront).film;
+    for (int y = 0; y < 16; ++y) {
+        for (int x : {0, 1}) EXPECT_EQ(film.pixel_mean(uint32_t(y * 16 + x)).x, 0.0) << x << "," << y;
+        for (int x : {14, 15}) EXPECT_NEAR(film.pixel_mean(uint32_t(y * 16 + x)).x, white, 1e-6 * white) << x << "," << y;
+    }
+}
+
 void expect_halves_render_as_their_colours(SceneDescription d) {
     test::view_from_above(d, 16, 8);
     const Film film = test::render_film(d, Integrator::wavefront).film;
@@ -245,13 +257,7 @@ TEST_F(TextureImport, GltfEmissiveTextureMultipliesTheFactor) {
     EXPECT_NE(d.textures[std::size_t(m.emission_texture)].name.find("emissiveTexture"), std::string::npos);
     for (const std::string& note : d.notes) EXPECT_EQ(note.find("emissiveTexture"), std::string::npos) << note;
     // Seen from above with no other light: 0 over the black half, 6 over the white half.
-    test::view_from_above(d, 16, 4);
-    d.lights.clear();
-    const Film film = test::render_film(d, Integrator::wavefront).film;
-    for (int y = 0; y < 16; ++y) {
-        for (int x : {0, 1}) EXPECT_EQ(film.pixel_mean(uint32_t(y * 16 + x)).x, 0.0) << x << "," << y;
-        for (int x : {14, 15}) EXPECT_NEAR(film.pixel_mean(uint32_t(y * 16 + x)).x, 6.0, 6e-6) << x << "," << y;
-    }
+    expect_emitted_halves(d, 6.0);
 
     // A mesh two nodes share, emitting: placed flattened, once per node, each copy with its
     // coordinates, so the light samples of either copy read black on its left half (u < 0.4375:
@@ -318,13 +324,7 @@ TEST_F(TextureImport, SceneFileEmissionTexture) {
     EXPECT_EQ(d.materials[0].emission, glm::vec3(5.0f));
     EXPECT_EQ(d.materials[0].emission_texture, 0);
     EXPECT_EQ(d.meshes[0].uvs.size(), 4u);
-    test::view_from_above(d, 16, 4);
-    d.lights.clear();
-    const Film film = test::render_film(d, Integrator::wavefront).film;
-    for (int y = 0; y < 16; ++y) {
-        for (int x : {0, 1}) EXPECT_EQ(film.pixel_mean(uint32_t(y * 16 + x)).x, 0.0) << x << "," << y;
-        for (int x : {14, 15}) EXPECT_NEAR(film.pixel_mean(uint32_t(y * 16 + x)).x, 5.0, 5e-6) << x << "," << y;
-    }
+    expect_emitted_halves(d, 5.0);
     const SceneDescription p = load(quad, R"({"panel": {"type": "principled", "metallic": 1, "roughness": 0.5,
         "base_color": [1, 1, 1], "emission": {"texture": "texture.png"}}})");
     EXPECT_EQ(p.materials[0].type, MaterialType::principled);  // it emits: not the conductor

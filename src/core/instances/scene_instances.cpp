@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/description/vertex_attribute_counts.h"
 #include "core/geometry/mesh_texture_coordinates.h"
 #include "core/instances/build_instances.h"
 
@@ -48,22 +49,7 @@ void build_instances(const SceneDescription& d, uint32_t first_id, SceneInstance
         const bool smooth = std::any_of(proto.parts.begin(), proto.parts.end(),
                                         [](const TriangleMesh& m) { return !m.normals.empty() && !m.triangles.empty(); });
         for (const TriangleMesh& part : proto.parts) {
-            if (!part.normals.empty() && part.normals.size() != part.vertices.size())
-                throw std::invalid_argument("build_scene: mesh \"" + proto.name + "\" has a part with " +
-                                            std::to_string(part.normals.size()) + " normals for " +
-                                            std::to_string(part.vertices.size()) + " vertices");
-            if (!part.uvs.empty() && part.uvs.size() != part.vertices.size())
-                throw std::invalid_argument("build_scene: mesh \"" + proto.name + "\" has a part with " +
-                                            std::to_string(part.uvs.size()) + " texture coordinates for " +
-                                            std::to_string(part.vertices.size()) + " vertices");
-            if (!part.second_uvs.empty() && part.second_uvs.size() != part.vertices.size())
-                throw std::invalid_argument("build_scene: mesh \"" + proto.name + "\" has a part with " +
-                                            std::to_string(part.second_uvs.size()) + " second texture coordinates for " +
-                                            std::to_string(part.vertices.size()) + " vertices");
-            if (!part.tangents.empty() && part.tangents.size() != part.vertices.size())
-                throw std::invalid_argument("build_scene: mesh \"" + proto.name + "\" has a part with " +
-                                            std::to_string(part.tangents.size()) + " tangents for " +
-                                            std::to_string(part.vertices.size()) + " vertices");
+            check_vertex_attribute_counts(part, "mesh \"" + proto.name + "\" has a part with");
             if (d.materials[part.material].is_emissive())
                 throw std::invalid_argument("build_scene: mesh \"" + proto.name +
                                             "\" emits light; the light table holds the scene's own triangles only");

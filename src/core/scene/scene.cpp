@@ -1,5 +1,6 @@
 #include "core/scene/scene.h"
 
+#include "core/description/vertex_attribute_counts.h"
 #include "core/geometry/mesh_texture_coordinates.h"
 #include "core/instances/build_instances.h"
 #include "core/materials/microfacet_bsdf.h"
@@ -129,18 +130,7 @@ Scene build_scene(const SceneDescription& description) {
     });
     for (std::size_t k = 0; k < description.meshes.size(); ++k) {
         const TriangleMesh& mesh = description.meshes[k];
-        if (!mesh.normals.empty() && mesh.normals.size() != mesh.vertices.size())
-            throw std::invalid_argument("build_scene: mesh " + std::to_string(k) + " has " + std::to_string(mesh.normals.size()) +
-                                        " normals for " + std::to_string(mesh.vertices.size()) + " vertices");
-        if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.vertices.size())
-            throw std::invalid_argument("build_scene: mesh " + std::to_string(k) + " has " + std::to_string(mesh.uvs.size()) +
-                                        " texture coordinates for " + std::to_string(mesh.vertices.size()) + " vertices");
-        if (!mesh.second_uvs.empty() && mesh.second_uvs.size() != mesh.vertices.size())
-            throw std::invalid_argument("build_scene: mesh " + std::to_string(k) + " has " + std::to_string(mesh.second_uvs.size()) +
-                                        " second texture coordinates for " + std::to_string(mesh.vertices.size()) + " vertices");
-        if (!mesh.tangents.empty() && mesh.tangents.size() != mesh.vertices.size())
-            throw std::invalid_argument("build_scene: mesh " + std::to_string(k) + " has " + std::to_string(mesh.tangents.size()) +
-                                        " tangents for " + std::to_string(mesh.vertices.size()) + " vertices");
+        check_vertex_attribute_counts(mesh, "mesh " + std::to_string(k) + " has");
         if (!as_parallelogram(mesh)) continue;
         scene.triangles.push_parallelogram(mesh.vertices[0], mesh.vertices[1], mesh.vertices[3], mesh.material);
         if (smooth) scene.shading_normals.push_flat();
