@@ -81,6 +81,40 @@ TEST(ShadingNormalStorage, OnlyScenesWithVertexNormalsStoreThem) {
     EXPECT_EQ(smooth.triangles.parallelogram_count, flat.triangles.parallelogram_count);
 }
 
+// The table stores each mesh's vertex normals once and indexes them: every triangle of a second
+// smooth mesh, after a flat one, still reads its own mesh's normals, not the first mesh's.
+TEST(ShadingNormalStorage, EachTriangleReadsItsOwnMeshsVertexNormalsOnce) {
+    SceneDescription d = test::furnace_cube(0.5f, 1.0f);
+    const std::size_t before = d.meshes.size();
+    TriangleMesh outward = icosphere(1), flat = icosphere(1), random = icosphere(2);
+    outward.normals = vertex_normals(outward, Normals::outward, 1);
+    random.normals = vertex_normals(random, Normals::random, 3);
+    d.meshes.push_back(outward);
+    d.meshes.push_back(flat);
+    d.meshes.push_back(random);
+    const Scene scene = build_scene(d);
+    ASSERT_GT(before, 0u);
+    // The cube's walls come first (as parallelograms or triangles), then the three meshes.
+    const std::size_t added = outward.triangles.size() + flat.triangles.size() + random.triangles.size();
+    ASSERT_EQ(scene.shading_normals.size(), scene.triangles.size());
+    std::size_t i = scene.triangles.size() - added;
+    glm::vec3 n[3];
+    for (std::size_t k = 0; k < i; ++k) EXPECT_FALSE(scene.shading_normals.vertex_normals(k, n)) << "triangle " << k;
+    for (const TriangleMesh* mesh : {&outward, &flat, &random}) {
+        for (const auto& tri : mesh->triangles) {
+            const bool smooth = !mesh->normals.empty();
+            ASSERT_EQ(scene.shading_normals.vertex_normals(i, n), smooth) << "triangle " << i;
+            if (smooth) {
+                for (int c = 0; c < 3; ++c) EXPECT_EQ(n[c], mesh->normals[tri[c]]) << "triangle " << i << " corner " << c;
+            }
+            ++i;
+        }
+    }
+    // Each vertex normal once, and three indices per triangle.
+    EXPECT_EQ(scene.shading_normals.bytes(),
+              scene.shading_normals.size() * 3 * sizeof(uint32_t) + (outward.vertices.size() + random.vertices.size()) * sizeof(glm::vec3));
+}
+
 TEST(ShadingNormalStorage, AQuadWithVertexNormalsStaysTwoTriangles) {
     SceneDescription d = test::furnace_cube(0.5f, 1.0f);
     TriangleMesh quad;

@@ -31,23 +31,27 @@ std::size_t workspace_paths(int width, int height, int spp, int tile_size, std::
 
 namespace {
 
-// Per primitive at the build's peak (bvh_build.cpp): its leaf block and its build record
-// (rows and rows - 1 floats), a PrimRef, at most two binary nodes, and the wide nodes, which
-// the collapse reserves at one per four primitives.
+// Per primitive, the larger of the build's two phases (bvh_build.cpp), with the wide nodes,
+// which the collapse reserves at one per four primitives, and each primitive's scene id in
+// both: first a PrimRef and at most two binary nodes, then its leaf block (rows floats).
 double bvh_bytes(const Scene& scene, const RenderOptions& options) {
     double primitives = double(scene.primitive_count());
     for (const InstancedMesh& m : scene.instances.meshes) primitives += double(m.triangles.size());  // each mesh once
     const double rows = scene.settings.accuracy.triangles == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
     const double node = options.bvh.node_width == 4 ? sizeof(BvhNode<4>) : sizeof(BvhNode<8>);
-    return primitives * ((2.0 * rows - 1.0) * sizeof(float) + sizeof(PrimRef) + 2.0 * sizeof(BinaryNode) + node / 4.0);
+    const double tree = sizeof(PrimRef) + 2.0 * sizeof(BinaryNode), leaves = rows * sizeof(float);
+    return primitives * (std::max(tree, leaves) + sizeof(uint32_t) + node / 4.0);
 }
 
 // TriangleSoA: 21 float rows and a material index per triangle; SphereSoA: 4 and one; an
-// instanced mesh's triangles once, however many instances place it.
+// instanced mesh's triangles once, however many instances place it; the vertex normals.
 double geometry_bytes(const Scene& scene) {
     double triangles = double(scene.triangles.size());
-    for (const InstancedMesh& m : scene.instances.meshes) triangles += double(m.triangles.size());
-    return triangles * (21 * sizeof(float) + sizeof(uint32_t)) + double(scene.spheres.size()) * (4 * sizeof(float) + sizeof(uint32_t));
+    double normals = double(scene.shading_normals.bytes());
+    for (const InstancedMesh& m : scene.instances.meshes)
+        triangles += double(m.triangles.size()), normals += double(m.shading_normals.bytes());
+    return triangles * (21 * sizeof(float) + sizeof(uint32_t)) + normals +
+           double(scene.spheres.size()) * (4 * sizeof(float) + sizeof(uint32_t));
 }
 
 // The textures' mip pyramids and the coordinates they are looked up at: 0 without textures.
@@ -104,6 +108,17 @@ std::string format_bytes(double bytes) {
 std::string texture_memory_line(const Scene& scene) {
     return "textures: " + std::to_string(scene.textures.size()) + (scene.textures.size() == 1 ? " image, " : " images, ") +
            format_bytes(texture_bytes(scene)) + " (mip levels of linear RGBA floats, and their coordinates)";
+}
+
+std::string geometry_memory_line(const Scene& scene) {
+    double triangles = double(scene.triangles.size()), normals = double(scene.shading_normals.bytes());
+    for (const InstancedMesh& m : scene.instances.meshes)
+        triangles += double(m.triangles.size()), normals += double(m.shading_normals.bytes());
+    const double each = 21 * sizeof(float) + sizeof(uint32_t), per = std::max(1.0, triangles);
+    char text[160];
+    std::snprintf(text, sizeof text, "%.0f triangles: %s of primitive arrays (%.0f B each), %s of vertex normals (%.1f B a triangle)",
+                  triangles, format_bytes(triangles * each).c_str(), each, format_bytes(normals).c_str(), normals / per);
+    return text;
 }
 
 std::string memory_problem(const MemoryEstimate& e, double available) {

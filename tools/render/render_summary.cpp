@@ -8,6 +8,7 @@
 #include "kernels/adaptive/adaptive_summary.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/caustics/photon_memory.h"
+#include "kernels/memory_estimate.h"
 
 namespace wt {
 
@@ -74,6 +75,7 @@ void print_render_summary(std::ostream& out, const RenderSummary& m) {
             << " %), mean " << a.mean_spp << " spp\n";
         out.precision(3);
     }
+    out << "  geometry         " << geometry_memory_line(*m.scene) << "\n";
     if (result.accel == Accel::bvh) {
         const BvhStats& b = result.bvh;
         const double prims = double(std::max<std::size_t>(1, b.primitive_count));

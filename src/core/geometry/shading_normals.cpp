@@ -1,14 +1,19 @@
 #include "core/geometry/shading_normals.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
 namespace wt {
 
-void ShadingNormalTable::push(const glm::vec3& n0, const glm::vec3& n1, const glm::vec3& n2) {
-    record_of_.push_back(uint32_t(records_.size()));
-    records_.push_back({n0, n1, n2});
+uint32_t ShadingNormalTable::add_vertex_normals(const std::vector<glm::vec3>& normals) {
+    // kFlat is the one index no normal may have.
+    if (normals.size() >= std::size_t(kFlat) - normals_.size())
+        throw std::length_error("shading normals: more than 2^32 - 1 vertex normals in one table");
+    const uint32_t first = uint32_t(normals_.size());
+    normals_.insert(normals_.end(), normals.begin(), normals.end());
+    return first;
 }
 
 glm::vec3 blend_normals(const glm::vec3& n0, const glm::vec3& n1, const glm::vec3& n2, float u, float v, const glm::vec3& geometric) {
@@ -20,16 +25,15 @@ glm::vec3 blend_normals(const glm::vec3& n0, const glm::vec3& n1, const glm::vec
 }
 
 glm::vec3 ShadingNormalTable::at(std::size_t i, float u, float v, const glm::vec3& geometric) const {
-    const uint32_t r = record_of_[i];
-    if (r == kFlat) return geometric;
-    const VertexNormals& n = records_[r];
-    return blend_normals(n.n0, n.n1, n.n2, u, v, geometric);
+    const Corners& c = corners_[i];
+    if (c.n0 == kFlat) return geometric;
+    return blend_normals(normals_[c.n0], normals_[c.n1], normals_[c.n2], u, v, geometric);
 }
 
 bool ShadingNormalTable::vertex_normals(std::size_t i, glm::vec3 out[3]) const {
-    const uint32_t r = record_of_[i];
-    if (r == kFlat) return false;
-    out[0] = records_[r].n0, out[1] = records_[r].n1, out[2] = records_[r].n2;
+    const Corners& c = corners_[i];
+    if (c.n0 == kFlat) return false;
+    out[0] = normals_[c.n0], out[1] = normals_[c.n1], out[2] = normals_[c.n2];
     return true;
 }
 

@@ -138,12 +138,14 @@ Scene build_scene(const SceneDescription& description) {
     }
     for (const TriangleMesh& mesh : description.meshes) {
         if (as_parallelogram(mesh)) continue;
+        const bool has_normals = smooth && !mesh.normals.empty() && !mesh.triangles.empty();
+        const uint32_t normal_base = has_normals ? scene.shading_normals.add_vertex_normals(mesh.normals) : 0;
         for (const auto& tri : mesh.triangles) {
             scene.triangles.push_back(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], mesh.material);
             if (textured) push_texture_coordinates(scene.texture_coordinates, mesh, tri);
             if (!smooth) continue;
-            if (mesh.normals.empty()) scene.shading_normals.push_flat();
-            else scene.shading_normals.push(mesh.normals[tri[0]], mesh.normals[tri[1]], mesh.normals[tri[2]]);
+            if (!has_normals) scene.shading_normals.push_flat();
+            else scene.shading_normals.push(normal_base + tri[0], normal_base + tri[1], normal_base + tri[2]);
         }
     }
     for (const Sphere& sphere : description.spheres) {

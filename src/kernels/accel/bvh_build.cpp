@@ -45,10 +45,8 @@ PrimRef triangle_ref(const TriangleSoA& t, std::size_t i) {
     return make_ref(box, uint32_t(i), parallelogram ? BvhLeafKind::parallelogram : BvhLeafKind::triangle);
 }
 
-// In scene id order, in parallel over fixed chunks: count what each chunk keeps, then fill;
-// every primitive's leaf record (`records`, record_size() floats each) on the way.
-std::vector<PrimRef> primitive_refs(const TriangleSoA& t, const SphereSoA& s, const BvhPrimitives& primitives, float* records,
-                                    ThreadPool& pool) {
+// In scene id order, in parallel over fixed chunks: count what each chunk keeps, then fill.
+std::vector<PrimRef> primitive_refs(const TriangleSoA& t, const SphereSoA& s, ThreadPool& pool) {
     constexpr std::size_t kChunk = 1 << 16;
     const std::size_t chunks = (t.size() + kChunk - 1) / kChunk;
     std::vector<std::size_t> kept(chunks + 1, 0);
@@ -57,16 +55,12 @@ std::vector<PrimRef> primitive_refs(const TriangleSoA& t, const SphereSoA& s, co
     });
     for (std::size_t c = 0; c < chunks; ++c) kept[c + 1] += kept[c];
     std::vector<PrimRef> refs(kept[chunks] + s.size());
-    const std::size_t stride = primitives.record_size();
     pool.parallel_for(chunks, [&](std::size_t c, int) {
         std::size_t out = kept[c];
-        for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i) {
-            primitives.write_record(t, s, i, records + i * stride);
+        for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i)
             if (!never_hit(t, i)) refs[out++] = triangle_ref(t, i);
-        }
     });
     for (std::size_t i = 0; i < s.size(); ++i) {
-        primitives.write_record(t, s, t.size() + i, records + (t.size() + i) * stride);
         const glm::vec3 c = s.center(i), r(s.radius[i]);
         Box box;
         box.extend_point(c - r), box.extend_point(c + r);
@@ -75,30 +69,31 @@ std::vector<PrimRef> primitive_refs(const TriangleSoA& t, const SphereSoA& s, co
     return refs;
 }
 
-// The leaves' primitive data, in parallel over fixed chunks of leaves.
-void fill_leaf_blocks(const float* records, const std::vector<PrimRef>& refs, const std::vector<const BinaryNode*>& leaves,
-                      BvhPrimitives& primitives, ThreadPool& pool) {
-    primitives.resize(refs.size());
+// The leaves' primitive data, in parallel over fixed chunks of leaves. `ids`: the scene ids in
+// leaf order (a leaf reference's first primitive indexes it).
+void fill_leaf_blocks(const TriangleSoA& t, const SphereSoA& s, const std::vector<uint32_t>& ids,
+                      const std::vector<uint32_t>& leaves, BvhPrimitives& primitives, ThreadPool& pool) {
+    primitives.resize(ids.size());
     constexpr std::size_t kLeavesPerJob = 4096;
     pool.parallel_for((leaves.size() + kLeavesPerJob - 1) / kLeavesPerJob, [&](std::size_t job, int) {
         const std::size_t end = std::min(leaves.size(), (job + 1) * kLeavesPerJob);
         for (std::size_t i = job * kLeavesPerJob; i < end; ++i) {
-            const BinaryNode& b = *leaves[i];
-            uint32_t ids[kBvhMaxLeafSize];
-            for (uint32_t l = 0; l < b.count; ++l) ids[l] = refs[b.first + l].id;
-            primitives.fill_leaf(records, b.first, ids, b.count, refs[b.first].kind == uint32_t(BvhLeafKind::sphere));
+            const uint32_t first = leaves[i] & kBvhFirstMask;
+            const uint32_t count = ((leaves[i] >> kBvhCountShift) & 7u) + 1u;
+            primitives.fill_leaf(t, s, first, ids.data() + first, count);
         }
     });
 }
 
+// The wide nodes, and the leaves' references for fill_leaf_blocks.
 template <int W>
-uint32_t collapse(const float* records, const BinaryTree& tree, const std::vector<PrimRef>& refs, float pad,
-                  AlignedVector<BvhNode<W>>& nodes, BvhPrimitives& primitives, BvhStats& stats, ThreadPool& pool) {
+uint32_t collapse(const BinaryTree& tree, const std::vector<PrimRef>& refs, float pad, AlignedVector<BvhNode<W>>& nodes,
+                  std::vector<uint32_t>& leaves, BvhStats& stats) {
     nodes.reserve(refs.size() / 4 + 1);
     WideCollapser<W> c(tree, refs, pad, nodes);
     const uint32_t root = c.emit(tree.root);
-    fill_leaf_blocks(records, refs, c.leaves, primitives, pool);
-    stats.leaf_count = c.leaves.size();
+    leaves = std::move(c.leaves);
+    stats.leaf_count = leaves.size();
     stats.node_count = nodes.size();
     // Expected node visits plus primitive tests of a ray that hits the scene's box (the SAH of
     // the wide tree with unit costs): what the build options trade against build time.
@@ -130,24 +125,31 @@ Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTe
     Bvh bvh;
     bvh.node_width_ = options.node_width;
     bvh.primitives_.test = test;
-    // Not initialised: primitive_refs writes every record, in parallel.
-    const std::unique_ptr<float[]> records(new float[(triangles.size() + spheres.size()) * bvh.primitives_.record_size()]);
-    std::vector<PrimRef> refs = primitive_refs(triangles, spheres, bvh.primitives_, records.get(), *pool);
-    if (refs.size() > kBvhMaxLeafPrimitives)
-        throw std::invalid_argument("BVH: " + std::to_string(refs.size()) + " primitives, more than the " +
+    std::vector<PrimRef> refs = primitive_refs(triangles, spheres, *pool);
+    const std::size_t primitive_count = refs.size();
+    if (primitive_count > kBvhMaxLeafPrimitives)
+        throw std::invalid_argument("BVH: " + std::to_string(primitive_count) + " primitives, more than the " +
                                     std::to_string(kBvhMaxLeafPrimitives) + " its leaf references can index");
-    if (!refs.empty()) {
-        SahSettings sah;
-        sah.max_leaf_size = uint32_t(options.max_leaf_size);
-        const BinaryTree tree = build_binary_sah(refs, sah, *pool);
-        // The wide tree is no deeper than the binary one it is collapsed from.
-        if (tree.max_depth * uint32_t(options.node_width - 1) + 1 > uint32_t(kBvhStackSize))
-            throw std::invalid_argument("BVH: tree too deep for the traversal stack (" + std::to_string(tree.max_depth) +
-                                        " levels)");
-        bvh.stats_.max_depth = tree.max_depth;
-        const float pad = rounding_pad(tree.nodes[tree.root].box(), eye);
-        bvh.root_ = options.node_width == 4 ? collapse<4>(records.get(), tree, refs, pad, bvh.nodes4_, bvh.primitives_, bvh.stats_, *pool)
-                                            : collapse<8>(records.get(), tree, refs, pad, bvh.nodes8_, bvh.primitives_, bvh.stats_, *pool);
+    if (primitive_count > 0) {
+        std::vector<uint32_t> leaves, ids(primitive_count);
+        {
+            SahSettings sah;
+            sah.max_leaf_size = uint32_t(options.max_leaf_size);
+            const BinaryTree tree = build_binary_sah(refs, sah, *pool);
+            // The wide tree is no deeper than the binary one it is collapsed from.
+            if (tree.max_depth * uint32_t(options.node_width - 1) + 1 > uint32_t(kBvhStackSize))
+                throw std::invalid_argument("BVH: tree too deep for the traversal stack (" + std::to_string(tree.max_depth) +
+                                            " levels)");
+            bvh.stats_.max_depth = tree.max_depth;
+            const float pad = rounding_pad(tree.nodes[tree.root].box(), eye);
+            bvh.root_ = options.node_width == 4 ? collapse<4>(tree, refs, pad, bvh.nodes4_, leaves, bvh.stats_)
+                                                : collapse<8>(tree, refs, pad, bvh.nodes8_, leaves, bvh.stats_);
+            for (std::size_t i = 0; i < primitive_count; ++i) ids[i] = refs[i].id;
+            // The binary tree and the references (36 bytes a primitive) go before the leaf
+            // blocks are allocated: the build's peak of memory is while they are filled.
+            std::vector<PrimRef>().swap(refs);
+        }
+        fill_leaf_blocks(triangles, spheres, ids, leaves, bvh.primitives_, *pool);
     } else {
         // Nothing to hit: the root is one node whose every slot is empty, which the traversals
         // walk as any node, instead of a leaf reference that names no block. (A ray with a zero
@@ -163,7 +165,7 @@ Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTe
         else add_empty_root(bvh.nodes8_);
         bvh.root_ = 0;
     }
-    bvh.stats_.primitive_count = refs.size();
+    bvh.stats_.primitive_count = primitive_count;
     bvh.stats_.node_bytes = bvh.nodes4_.size() * sizeof(BvhNode<4>) + bvh.nodes8_.size() * sizeof(BvhNode<8>);
     bvh.stats_.primitive_bytes = bvh.primitives_.bytes();
     bvh.stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

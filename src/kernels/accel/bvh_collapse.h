@@ -28,7 +28,7 @@ public:
 
     // Sums for the SAH cost of the result: node boxes' areas, leaf areas times their counts.
     double node_area_sum = 0.0, leaf_area_sum = 0.0;
-    std::vector<const BinaryNode*> leaves;  // in the order they were met
+    std::vector<uint32_t> leaves;  // their references (bvh_view.h), in the order they were met
 
 private:
     uint32_t emit_inner(const BinaryNode& b) {
@@ -74,10 +74,10 @@ private:
     // The leaf's primitives keep their place in `refs` (the partitions made each leaf a
     // contiguous run there), so the blocks can be filled later, in parallel (fill_leaf_blocks).
     uint32_t emit_leaf(const BinaryNode& b) {
-        leaves.push_back(&b);
         leaf_area_sum += double(b.box().half_area()) * b.count;
         const uint32_t kind = refs_[b.first].kind;
-        return kBvhLeafBit | (kind << kBvhKindShift) | ((b.count - 1) << kBvhCountShift) | b.first;
+        leaves.push_back(kBvhLeafBit | (kind << kBvhKindShift) | ((b.count - 1) << kBvhCountShift) | b.first);
+        return leaves.back();
     }
 
     static constexpr float kInf = std::numeric_limits<float>::infinity();

@@ -11,7 +11,9 @@ float id_bits(uint32_t id) {
 }
 }  // namespace
 
-void BvhPrimitives::write_record(const TriangleSoA& t, const SphereSoA& s, std::size_t i, float* out) const {
+namespace {
+// Primitive i's rows but the id: rows() - 1 floats for a triangle, kSphereRows - 1 for a sphere.
+void primitive_rows(const TriangleSoA& t, const SphereSoA& s, TriangleTest test, std::size_t i, float* out) {
     if (i >= t.size()) {
         const std::size_t k = i - t.size();
         const float row[] = {s.cx[k], s.cy[k], s.cz[k], s.radius[k]};
@@ -25,16 +27,17 @@ void BvhPrimitives::write_record(const TriangleSoA& t, const SphereSoA& s, std::
         std::memcpy(out, row, sizeof row);
     }
 }
+}  // namespace
 
-void BvhPrimitives::fill_leaf(const float* records, uint32_t first, const uint32_t* ids, uint32_t count, bool spheres) {
-    const uint32_t stride = rows() - 1;
-    const uint32_t data_rows = spheres ? kSphereRows - 1 : stride;
-    const uint32_t id_row = spheres ? kSphereRows - 1 : stride;
+void BvhPrimitives::fill_leaf(const TriangleSoA& t, const SphereSoA& s, uint32_t first, const uint32_t* ids, uint32_t count) {
+    const bool spheres = ids[0] >= t.size();  // a leaf holds one kind
+    const uint32_t data_rows = spheres ? kSphereRows - 1 : rows() - 1;
     float* block = blocks.data() + std::size_t(first) * rows();
     for (uint32_t l = 0; l < count; ++l) {
-        const float* r = records + std::size_t(ids[l]) * stride;
+        float r[kWatertightRows > kMollerTrumboreRows ? kWatertightRows : kMollerTrumboreRows];
+        primitive_rows(t, s, test, ids[l], r);
         for (uint32_t row = 0; row < data_rows; ++row) block[row * count + l] = r[row];
-        block[id_row * count + l] = id_bits(ids[l]);
+        block[data_rows * count + l] = id_bits(ids[l]);
     }
 }
 

@@ -22,15 +22,11 @@ struct BvhPrimitives {
 
     uint32_t rows() const { return test == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows; }
     void resize(std::size_t primitives) { blocks.resize(primitives * rows()); }
-    // A primitive's block rows but the id, record_size() floats. The builder writes every
-    // primitive's record in scene id order, reading the scene's arrays in order, so that filling
-    // the leaves, which visit the primitives in tree order, reads one record per primitive
-    // instead of one cache line from each of a dozen arrays.
-    uint32_t record_size() const { return rows() - 1; }
-    void write_record(const TriangleSoA& triangles, const SphereSoA& spheres, std::size_t id, float* out) const;
     // Writes the block of the leaf whose primitives, scene ids ids[0 .. count), start at index
-    // `first`; all of one kind.
-    void fill_leaf(const float* records, uint32_t first, const uint32_t* ids, uint32_t count, bool spheres);
+    // `first`; all of one kind. Read straight from the scene's arrays: a copy of every
+    // primitive's rows in id order would gather faster, but would be one more copy of the
+    // geometry alive at the build's peak of memory.
+    void fill_leaf(const TriangleSoA& triangles, const SphereSoA& spheres, uint32_t first, const uint32_t* ids, uint32_t count);
     std::size_t bytes() const { return blocks.size() * sizeof(float); }
 };
 
