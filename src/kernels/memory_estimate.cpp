@@ -43,15 +43,12 @@ double bvh_bytes(const Scene& scene, const RenderOptions& options) {
     return primitives * (std::max(tree, leaves) + sizeof(uint32_t) + node / 4.0);
 }
 
-// TriangleSoA: 21 float rows and a material index per triangle; SphereSoA: 4 and one; an
+// The triangles' and spheres' arrays (SphereSoA: 4 floats and a material index each); an
 // instanced mesh's triangles once, however many instances place it; the vertex normals.
 double geometry_bytes(const Scene& scene) {
-    double triangles = double(scene.triangles.size());
-    double normals = double(scene.shading_normals.bytes());
-    for (const InstancedMesh& m : scene.instances.meshes)
-        triangles += double(m.triangles.size()), normals += double(m.shading_normals.bytes());
-    return triangles * (21 * sizeof(float) + sizeof(uint32_t)) + normals +
-           double(scene.spheres.size()) * (4 * sizeof(float) + sizeof(uint32_t));
+    double bytes = double(scene.triangles.bytes() + scene.shading_normals.bytes());
+    for (const InstancedMesh& m : scene.instances.meshes) bytes += double(m.triangles.bytes() + m.shading_normals.bytes());
+    return bytes + double(scene.spheres.size()) * (4 * sizeof(float) + sizeof(uint32_t));
 }
 
 // The textures' mip pyramids and the coordinates they are looked up at: 0 without textures.
@@ -111,13 +108,16 @@ std::string texture_memory_line(const Scene& scene) {
 }
 
 std::string geometry_memory_line(const Scene& scene) {
-    double triangles = double(scene.triangles.size()), normals = double(scene.shading_normals.bytes());
-    for (const InstancedMesh& m : scene.instances.meshes)
-        triangles += double(m.triangles.size()), normals += double(m.shading_normals.bytes());
-    const double each = 21 * sizeof(float) + sizeof(uint32_t), per = std::max(1.0, triangles);
+    double triangles = double(scene.triangles.size()), arrays = double(scene.triangles.bytes());
+    double normals = double(scene.shading_normals.bytes());
+    for (const InstancedMesh& m : scene.instances.meshes) {
+        triangles += double(m.triangles.size()), arrays += double(m.triangles.bytes());
+        normals += double(m.shading_normals.bytes());
+    }
+    const double per = std::max(1.0, triangles);
     char text[160];
     std::snprintf(text, sizeof text, "%.0f triangles: %s of primitive arrays (%.0f B each), %s of vertex normals (%.1f B a triangle)",
-                  triangles, format_bytes(triangles * each).c_str(), each, format_bytes(normals).c_str(), normals / per);
+                  triangles, format_bytes(arrays).c_str(), arrays / per, format_bytes(normals).c_str(), normals / per);
     return text;
 }
 

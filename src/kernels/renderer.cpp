@@ -30,6 +30,10 @@ const RenderOptions& checked(const Scene& scene, const RenderOptions& options) {
     if (scene.settings.accuracy.triangles == TriangleTest::watertight && scene.triangles.parallelogram_count > 0)
         throw std::invalid_argument("render: the watertight triangle test cannot render parallelograms; build the scene "
                                     "with the accuracy settings it is rendered with");
+    if (!scene.triangles.serves(scene.settings.accuracy.triangles))
+        throw std::invalid_argument(std::string("render: the scene's triangles were stored for another triangle test than ") +
+                                    name_of(scene.settings.accuracy.triangles) +
+                                    "; build the scene with the accuracy settings it is rendered with");
     return options;
 }
 

@@ -32,17 +32,29 @@ void TriangleSoA::push(const glm::vec3& a, const glm::vec3& given_b, const glm::
     const glm::vec3 c = sliver ? a : given_c;
     const glm::vec3 e1 = b - a;
     const glm::vec3 e2 = c - a;
-    const glm::vec3 cross = glm::cross(e1, e2);
-    const float length = glm::length(cross);
-    const glm::vec3 n = length > 0.0f ? cross / length : glm::vec3(0.0f);
     v0x.push_back(a.x), v0y.push_back(a.y), v0z.push_back(a.z);
-    v1x.push_back(b.x), v1y.push_back(b.y), v1z.push_back(b.z);
-    v2x.push_back(c.x), v2y.push_back(c.y), v2z.push_back(c.z);
+    if (keeps_vertices_) {
+        v1x.push_back(b.x), v1y.push_back(b.y), v1z.push_back(b.z);
+        v2x.push_back(c.x), v2y.push_back(c.y), v2z.push_back(c.z);
+    }
     e1x.push_back(e1.x), e1y.push_back(e1.y), e1z.push_back(e1.z);
     e2x.push_back(e2.x), e2y.push_back(e2.y), e2z.push_back(e2.z);
-    scaled_nx.push_back(cross.x), scaled_ny.push_back(cross.y), scaled_nz.push_back(cross.z);
-    nx.push_back(n.x), ny.push_back(n.y), nz.push_back(n.z);
+    if (keeps_scaled_normal_) {
+        const glm::vec3 cross = glm::cross(e1, e2);
+        scaled_nx.push_back(cross.x), scaled_ny.push_back(cross.y), scaled_nz.push_back(cross.z);
+    }
     material.push_back(material_id);
+}
+
+void TriangleSoA::store_only_for(TriangleTest test) {
+    if (size() > 0) throw std::logic_error("TriangleSoA: the rows to store are chosen before the first triangle");
+    keeps_vertices_ = test == TriangleTest::watertight;
+    keeps_scaled_normal_ = test == TriangleTest::moller_trumbore;
+}
+
+std::size_t TriangleSoA::bytes() const {
+    const std::size_t float_rows = 9 + (keeps_vertices_ ? 6 : 0) + (keeps_scaled_normal_ ? 3 : 0);
+    return size() * (float_rows * sizeof(float) + sizeof(uint32_t));
 }
 
 void SphereSoA::push_back(const glm::vec3& c, float r, uint32_t material_id) {

@@ -128,6 +128,7 @@ Scene build_scene(const SceneDescription& description) {
     const bool smooth = std::any_of(description.meshes.begin(), description.meshes.end(), [](const TriangleMesh& m) {
         return !m.normals.empty() && !m.triangles.empty();
     });
+    scene.triangles.store_only_for(description.settings.accuracy.triangles);
     for (std::size_t k = 0; k < description.meshes.size(); ++k) {
         const TriangleMesh& mesh = description.meshes[k];
         check_vertex_attribute_counts(mesh, "mesh " + std::to_string(k) + " has");

@@ -110,6 +110,8 @@ Bvh build_bvh(const Scene& scene, const BvhBuildOptions& options, ThreadPool* po
 
 Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTest test, const glm::vec3& eye,
               const BvhBuildOptions& options, ThreadPool* pool) {
+    if (!triangles.serves(test))
+        throw std::invalid_argument(std::string("BVH: the triangles were stored for another triangle test than ") + name_of(test));
     if (options.node_width != 4 && options.node_width != 8)
         throw std::invalid_argument("BVH: node width must be 4 or 8, got " + std::to_string(options.node_width));
     if (options.max_leaf_size < 1 || options.max_leaf_size > int(kBvhMaxLeafSize))

@@ -47,7 +47,7 @@ SurfaceAverages surface_averages(const Scene& scene) {
     };
     const TriangleSoA& t = scene.triangles;
     for (std::size_t i = 0; i < t.size(); ++i)
-        add(double(glm::length(t.scaled_normal(i))) * (t.is_parallelogram(i) ? 1.0 : 0.5), t.material[i]);
+        add(double(glm::length(glm::cross(t.edge1(i), t.edge2(i)))) * (t.is_parallelogram(i) ? 1.0 : 0.5), t.material[i]);
     const SphereSoA& s = scene.spheres;
     for (std::size_t i = 0; i < s.size(); ++i) add(4.0 * double(kPi) * double(s.radius[i]) * double(s.radius[i]), s.material[i]);
     if (!(area > 0.0)) return {};

@@ -1,6 +1,7 @@
 #include "kernels/isa/intersect_dispatch.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace wt {
 
@@ -71,6 +72,10 @@ const IntersectKernels& intersect_kernels(Isa isa, const AccuracySettings& accur
 
 SceneView scene_view(const Scene& scene) {
     const TriangleSoA& t = scene.triangles;
+    if (!t.serves(scene.settings.accuracy.triangles))
+        throw std::invalid_argument(std::string("intersect: the scene's triangles were stored for another triangle test than ") +
+                                    name_of(scene.settings.accuracy.triangles) +
+                                    "; build the scene with the accuracy settings it is rendered with");
     const SphereSoA& s = scene.spheres;
     SceneView v;
     v.triangles = {t.v0x.data(), t.v0y.data(), t.v0z.data(), t.e1x.data(), t.e1y.data(), t.e1z.data(),
