@@ -188,6 +188,26 @@ TEST_F(PlyImport, IndexOutOfRange) {
     expect_mesh_error(error_for("neg.ply"), "neg.ply:20: vertex index -1 out of range", "");
 }
 
+// An ASCII number beyond its column's declared type (the fuzzer's list length of 3e29 as a
+// uchar) is an error naming the line and the type, not a conversion out of range.
+TEST_F(PlyImport, AsciiIntegerOutOfItsTypesRangeNamesTheLine) {
+    write("count.ply", ascii_with("3 0 1 4", "333333333333333333333333333330 0 1 4"));
+    expect_mesh_error(error_for("count.ply"), "count.ply:20: \"333333333333333333333333333330\" is out of range for its type, uchar", "");
+    write("uchar.ply", ascii_with("3 0 1 4", "256 0 1 4"));
+    expect_mesh_error(error_for("uchar.ply"), "uchar.ply:20: \"256\" is out of range for its type, uchar", "");
+    write("index.ply", ascii_with("3 0 1 4", "3 0 1 4294967296"));
+    expect_mesh_error(error_for("index.ply"), "index.ply:20: \"4294967296\" is out of range for its type, int", "");
+    // A float-typed index is allowed, and one far out of range is reported as it is written.
+    std::string floats = ascii_with("3 0 1 4", "3 0 1 1e30");
+    floats.replace(floats.find("list uchar int"), 14, "list uchar float");
+    write("float.ply", floats);
+    expect_mesh_error(error_for("float.ply"), "float.ply:20: vertex index 1e+30 out of range (the file has 5 vertices)", "");
+    // The largest value of the type is read: 255 is a list length a uchar holds (and then the
+    // line has too few indices, the next check's error).
+    write("max.ply", ascii_with("3 0 1 4", "255 0 1 4"));
+    expect_mesh_error(error_for("max.ply"), "max.ply:20: too few values", "");
+}
+
 TEST_F(PlyImport, FaceWithTwoVertices) {
     write("bad.ply", ascii_with("3 0 1 4", "2 0 1"));
     expect_mesh_error(error_for("bad.ply"), "bad.ply:20: a face needs at least 3 vertices, got 2", "");

@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
+#include <string>
 
 #include "core/import/file_bytes.h"
 #include "core/import/mesh_file.h"
@@ -65,6 +67,44 @@ std::size_t type_size(PlyType t) {
 }
 
 bool is_integer_type(PlyType t) { return t != PlyType::float32 && t != PlyType::float64; }
+
+// The values an integer type holds: an ASCII file can write any number in any column, and a
+// list length or an index beyond its declared type would reach integer conversions unchecked.
+bool fits_integer_type(PlyType t, double v) {
+    switch (t) {
+    case PlyType::int8: return v >= -128.0 && v <= 127.0;
+    case PlyType::uint8: return v >= 0.0 && v <= 255.0;
+    case PlyType::int16: return v >= -32768.0 && v <= 32767.0;
+    case PlyType::uint16: return v >= 0.0 && v <= 65535.0;
+    case PlyType::int32: return v >= -2147483648.0 && v <= 2147483647.0;
+    case PlyType::uint32: return v >= 0.0 && v <= 4294967295.0;
+    case PlyType::float32: case PlyType::float64: return true;
+    }
+    return false;
+}
+
+// A value for a message: exact for integers, else as %g (a float-typed index may be 1e30 or NaN,
+// which no integer conversion may be asked to hold).
+std::string number_text(double v) {
+    if (v == std::floor(v) && std::fabs(v) < 0x1p53) return std::to_string(int64_t(v));
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+const char* type_name(PlyType t) {
+    switch (t) {
+    case PlyType::int8: return "char";
+    case PlyType::uint8: return "uchar";
+    case PlyType::int16: return "short";
+    case PlyType::uint16: return "ushort";
+    case PlyType::int32: return "int";
+    case PlyType::uint32: return "uint";
+    case PlyType::float32: return "float";
+    case PlyType::float64: return "double";
+    }
+    return "?";
+}
 
 // Reads the records of one file; `where()` names the current record for messages.
 class PlyReader {
@@ -195,6 +235,8 @@ private:
         const std::string token(cursor_, std::strcspn(cursor_, " \t"));
         if (end == cursor_ || (*end != '\0' && *end != ' ' && *end != '\t')) fail("not a number: \"" + token + "\"");
         if (is_integer_type(type) && !(v == std::floor(v))) fail("expected an integer, got \"" + token + "\"");
+        if (!fits_integer_type(type, v))
+            fail("\"" + token + "\" is out of range for its type, " + type_name(type));
         cursor_ = end;
         return v;
     }
@@ -261,7 +303,7 @@ private:
                 for (uint64_t k = 0; k < uint64_t(count); ++k) {
                     const double index = value(p.type);
                     if (!(index >= 0 && index < double(vertex_count_)))
-                        fail("vertex index " + std::to_string(int64_t(index)) + " out of range (the file has " +
+                        fail("vertex index " + number_text(index) + " out of range (the file has " +
                              std::to_string(vertex_count_) + " vertices)");
                     polygon.push_back(uint32_t(index));
                 }
