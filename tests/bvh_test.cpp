@@ -47,7 +47,7 @@ struct FlatAnswers {
 void expect_bvh_matches_flat(const Scene& scene, const test::RayBatch& rays, const FlatAnswers& flat, Isa isa,
                              const BvhBuildOptions& options, const std::string& what) {
     SCOPED_TRACE(what + ", isa " + isa_name(isa) + ", width " + std::to_string(options.node_width) + ", leaf " +
-                 std::to_string(options.max_leaf_size));
+                 std::to_string(options.max_leaf_size) + (options.parallelograms_beside ? "" : ", parallelograms in the tree"));
     const Bvh bvh = build_bvh(scene, options);
     const IntersectKernels& k = intersect_kernels(isa, scene.settings.accuracy);
     const BvhView tree = bvh_view(bvh);
@@ -91,10 +91,13 @@ std::vector<Isa> supported_isas() {
     return isas;
 }
 
+// Every width and leaf size with the hexroom's parallelograms beside the tree (the default),
+// and one with them in it.
 std::vector<BvhBuildOptions> build_variants() {
     std::vector<BvhBuildOptions> all;
     for (int width : {4, 8})
         for (int leaf : {1, 4, 8}) all.push_back({width, leaf, 2});
+    all.push_back({8, 8, 2, false});
     return all;
 }
 
@@ -183,25 +186,30 @@ TEST(Bvh, EmptySceneHitsNothing) {
     }
 }
 
-// Every primitive in exactly one leaf, every box inside its parent's, the same tree for any
-// thread count.
+// Every primitive in exactly one leaf (but the parallelograms tested beside the tree), every box
+// inside its parent's, the same tree for any thread count.
 TEST(Bvh, BuildInvariantsAndDeterminism) {
     const Scene scene = build_scene(test::hexroom_with_meshes(8, 8, 1));
+    ASSERT_GT(scene.triangles.parallelogram_count, 0u);
+    ASSERT_LE(scene.triangles.parallelogram_count, kBvhMostBeside);
+    for (const bool beside : {true, false})
     for (int width : {4, 8}) {
-        const Bvh one = build_bvh(scene, {width, 8, 1});
+        SCOPED_TRACE(beside ? "parallelograms beside the tree" : "parallelograms in the tree");
+        const Bvh one = build_bvh(scene, {width, 8, 1, beside});
+        EXPECT_EQ(one.stats().beside_count, beside ? scene.triangles.parallelogram_count : 0u);
         const test::BvhDump reference = test::dump_bvh(bvh_view(one));
         EXPECT_TRUE(reference.parents_contain_children) << "width " << width;
         std::vector<uint32_t> ids = reference.primitive_ids;
         std::sort(ids.begin(), ids.end());
         std::vector<uint32_t> expected;
-        for (uint32_t i = 0; i < scene.primitive_count(); ++i)
+        for (uint32_t i = uint32_t(one.stats().beside_count); i < scene.primitive_count(); ++i)
             if (i >= scene.triangles.size() || !(scene.triangles.edge1(i) == glm::vec3(0.0f) && scene.triangles.edge2(i) == glm::vec3(0.0f)))
                 expected.push_back(i);
         EXPECT_EQ(ids, expected) << "every primitive exactly once, width " << width;
         EXPECT_LE(reference.max_leaf_size, 8u);
         EXPECT_TRUE(reference.leaves_one_kind);
         for (int threads : {2, 3}) {
-            const test::BvhDump other = test::dump_bvh(bvh_view(build_bvh(scene, {width, 8, threads})));
+            const test::BvhDump other = test::dump_bvh(bvh_view(build_bvh(scene, {width, 8, threads, beside})));
             EXPECT_TRUE(other == reference) << "tree differs with " << threads << " threads, width " << width;
         }
         EXPECT_GT(one.stats().sah_cost, 0.0);

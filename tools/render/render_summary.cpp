@@ -81,7 +81,9 @@ void print_render_summary(std::ostream& out, const RenderSummary& m) {
         const double prims = double(std::max<std::size_t>(1, b.primitive_count));
         out << "  BVH              " << m.options->bvh.node_width << "-wide, " << with_si_prefix(double(b.primitive_count))
             << " primitives, " << with_si_prefix(double(b.node_count)) << " nodes, " << with_si_prefix(double(b.leaf_count))
-            << " leaves, SAH cost " << b.sah_cost << ", built in " << b.build_seconds << " s\n";
+            << " leaves, SAH cost " << b.sah_cost << ", built in " << b.build_seconds << " s"
+            << (b.beside_count > 0 ? "; " + std::to_string(b.beside_count) + " parallelograms tested beside it" : std::string())
+            << "\n";
         out << "  BVH memory       " << with_si_prefix(double(b.node_bytes + b.primitive_bytes)) << "B ("
             << double(b.node_bytes) / prims << " B/primitive nodes, " << double(b.primitive_bytes) / prims
             << " B/primitive leaf data)\n";

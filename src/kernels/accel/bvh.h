@@ -25,14 +25,20 @@ namespace wt {
 
 class ThreadPool;
 
+// Scenes with at most this many parallelograms test them beside the tree (BvhView::beside).
+constexpr uint32_t kBvhMostBeside = 16;
+
 struct BvhBuildOptions {
     int node_width = 8;     // children per node: 4 or 8
     int max_leaf_size = 8;  // primitives per leaf, 1 ... 8
     int threads = 0;        // 0: one per hardware thread; the tree is the same for any count
+    // Up to kBvhMostBeside parallelograms tested flat beside the tree instead of in it.
+    bool parallelograms_beside = true;
 };
 
 struct BvhStats {
     std::size_t primitive_count = 0;  // primitives in the tree (slivers, never hit, are left out)
+    std::size_t beside_count = 0;     // parallelograms tested beside it
     std::size_t node_count = 0;
     std::size_t leaf_count = 0;
     uint32_t max_depth = 0;
@@ -57,6 +63,7 @@ private:
     AlignedVector<BvhNode<4>> nodes4_;  // the one of the two that node_width_ names
     AlignedVector<BvhNode<8>> nodes8_;
     BvhPrimitives primitives_;
+    TriangleView beside_{};  // the scene's arrays, read by the kernels for ids [0, stats_.beside_count)
     BvhStats stats_;
 };
 

@@ -13,6 +13,7 @@
 #include "kernels/accel/bvh_boxes.h"
 #include "kernels/accel/bvh_collapse.h"
 #include "kernels/accel/sah_builder.h"
+#include "kernels/primitives/triangle_view.h"
 
 namespace wt {
 namespace {
@@ -46,19 +47,20 @@ PrimRef triangle_ref(const TriangleSoA& t, std::size_t i) {
 }
 
 // In scene id order, in parallel over fixed chunks: count what each chunk keeps, then fill.
-std::vector<PrimRef> primitive_refs(const TriangleSoA& t, const SphereSoA& s, ThreadPool& pool) {
+// The first `beside` triangles stay out (tested beside the tree).
+std::vector<PrimRef> primitive_refs(const TriangleSoA& t, const SphereSoA& s, uint32_t beside, ThreadPool& pool) {
     constexpr std::size_t kChunk = 1 << 16;
     const std::size_t chunks = (t.size() + kChunk - 1) / kChunk;
     std::vector<std::size_t> kept(chunks + 1, 0);
     pool.parallel_for(chunks, [&](std::size_t c, int) {
-        for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i) kept[c + 1] += !never_hit(t, i);
+        for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i) kept[c + 1] += i >= beside && !never_hit(t, i);
     });
     for (std::size_t c = 0; c < chunks; ++c) kept[c + 1] += kept[c];
     std::vector<PrimRef> refs(kept[chunks] + s.size());
     pool.parallel_for(chunks, [&](std::size_t c, int) {
         std::size_t out = kept[c];
         for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i)
-            if (!never_hit(t, i)) refs[out++] = triangle_ref(t, i);
+            if (i >= beside && !never_hit(t, i)) refs[out++] = triangle_ref(t, i);
     });
     for (std::size_t i = 0; i < s.size(); ++i) {
         const glm::vec3 c = s.center(i), r(s.radius[i]);
@@ -127,7 +129,14 @@ Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTe
     Bvh bvh;
     bvh.node_width_ = options.node_width;
     bvh.primitives_.test = test;
-    std::vector<PrimRef> refs = primitive_refs(triangles, spheres, *pool);
+    // A few parallelograms (a room's walls) are tested beside the tree, from the scene's arrays.
+    const bool beside = options.parallelograms_beside && test == TriangleTest::moller_trumbore &&
+                        triangles.parallelogram_count > 0 && triangles.parallelogram_count <= kBvhMostBeside;
+    if (beside) {
+        bvh.beside_ = triangle_view(triangles);
+        bvh.stats_.beside_count = triangles.parallelogram_count;
+    }
+    std::vector<PrimRef> refs = primitive_refs(triangles, spheres, uint32_t(bvh.stats_.beside_count), *pool);
     const std::size_t primitive_count = refs.size();
     if (primitive_count > kBvhMaxLeafPrimitives)
         throw std::invalid_argument("BVH: " + std::to_string(primitive_count) + " primitives, more than the " +
@@ -182,6 +191,8 @@ BvhView bvh_view(const Bvh& bvh) {
     v.max_depth = bvh.stats_.max_depth;
     v.leaves = bvh.primitives_.blocks.data();
     v.leaf_rows = bvh.primitives_.rows();
+    v.beside = bvh.beside_;
+    v.beside_count = uint32_t(bvh.stats_.beside_count);
     return v;
 }
 

@@ -115,6 +115,18 @@ void trace_bvh_packets(const BvhView& bvh, const RayView& rays, QueryOutput<Q> o
         const vbool<N> negative[3] = {simd::asInt(r.d.x) < vint<N>(0), simd::asInt(r.d.y) < vint<N>(0),
                                       simd::asInt(r.d.z) < vint<N>(0)};
         TreePacketState<Q, N> state(r);
+        // The parallelograms beside the tree first (bvh_view.h), each broadcast to the packet.
+        if constexpr (T == TriangleTest::moller_trumbore)
+            for (uint32_t k = 0; k < bvh.beside_count && !state.done(); ++k) {
+                LaneHits<N> h;
+                const vbool<N> hit = intersect_triangles<Planar::parallelogram>(tr, broadcast_triangle<T, N>(bvh.beside, k),
+                                                                                r.active, state.limit(), h);
+                state.record(r.active & hit, h, vint<N>(int32_t(k)));
+            }
+        if (state.done()) {  // every ray blocked by a wall
+            state.write(out, first, r.count);
+            continue;
+        }
         uint32_t stack_ref[kBvhStackSize];
         float stack_t[kBvhStackSize];
         int top = 0;

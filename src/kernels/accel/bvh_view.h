@@ -65,6 +65,12 @@ struct BvhView {
     // The scene's instances (two-level traversal, instance_traverse.h), or null: a scene
     // without instances traces this tree alone, as before instances existed.
     const InstanceView* instances = nullptr;
+    // The scene's parallelograms when it has only a few (its walls, floor and lights): tested
+    // flat, SIMD, before the tree, and left out of it. Boxes that big would each cover most of
+    // the tree, and every ray would walk into them; tested first, the one a ray hits bounds its
+    // walk. From the scene's own arrays, ids [0, beside_count). 0: the tree holds them.
+    TriangleView beside{};
+    uint32_t beside_count = 0;
     // A scene with alpha-tested materials: every candidate hit is asked about first
     // (alpha_filter.h), one ray at a time. Null otherwise, and then no kernel asks.
     AlphaKeepsHit alpha_keeps = nullptr;

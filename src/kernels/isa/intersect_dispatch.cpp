@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "kernels/primitives/triangle_view.h"
+
 namespace wt {
 
 const char* isa_name(Isa isa) {
@@ -78,10 +80,7 @@ SceneView scene_view(const Scene& scene) {
                                     "; build the scene with the accuracy settings it is rendered with");
     const SphereSoA& s = scene.spheres;
     SceneView v;
-    v.triangles = {t.v0x.data(), t.v0y.data(), t.v0z.data(), t.e1x.data(), t.e1y.data(), t.e1z.data(),
-                   t.e2x.data(), t.e2y.data(), t.e2z.data(), t.scaled_nx.data(), t.scaled_ny.data(), t.scaled_nz.data(),
-                   t.v1x.data(), t.v1y.data(), t.v1z.data(),
-                   t.v2x.data(), t.v2y.data(), t.v2z.data(), uint32_t(t.size()), t.parallelogram_count};
+    v.triangles = triangle_view(t);
     v.spheres = {s.cx.data(), s.cy.data(), s.cz.data(), s.radius.data(), uint32_t(s.size()), uint32_t(t.size())};
     return v;
 }
