@@ -105,5 +105,31 @@ TEST(TriangleStorage, TheOtherTestIsRefusedNotReadOutOfBounds) {
     }
 }
 
+// The copy a BVH keeps of a scene's parallelograms (tested beside its tree): the first n entries
+// of exactly the rows the scene stores, bit for bit, and its parallelograms among them.
+TEST(TriangleStorage, FirstCopiesTheLeadingEntriesOfTheStoredRows) {
+    const Scene scene = build_scene(test::hexroom_with_meshes(4, 4, 1));
+    const TriangleSoA& t = scene.triangles;
+    ASSERT_GT(t.parallelogram_count, 0u);
+    ASSERT_GT(t.size(), std::size_t(t.parallelogram_count) + 2);
+    for (const std::size_t n : {std::size_t(t.parallelogram_count), std::size_t(t.parallelogram_count) + 2}) {
+        const TriangleSoA first = t.first(n);
+        ASSERT_EQ(first.size(), n);
+        EXPECT_EQ(first.parallelogram_count, t.parallelogram_count);
+        EXPECT_EQ(first.has_scaled_normal(), t.has_scaled_normal());
+        EXPECT_EQ(first.has_vertices(), t.has_vertices());
+        EXPECT_TRUE(first.v1x.empty());
+        for (std::size_t i = 0; i < n; ++i) {
+            EXPECT_EQ(first.vertex0(i), t.vertex0(i)) << i;
+            EXPECT_EQ(first.edge1(i), t.edge1(i)) << i;
+            EXPECT_EQ(first.edge2(i), t.edge2(i)) << i;
+            EXPECT_EQ(first.scaled_normal(i), t.scaled_normal(i)) << i;
+            EXPECT_EQ(first.material[i], t.material[i]) << i;
+        }
+    }
+    EXPECT_EQ(t.first(1).parallelogram_count, 1u);
+    EXPECT_THROW(t.first(t.size() + 1), std::logic_error);
+}
+
 }  // namespace
 }  // namespace wt

@@ -54,7 +54,11 @@ RenderSession::RenderSession(const Scene& scene, const RenderOptions& options)
     if (accel_ != Accel::bvh && scene.has_alpha_materials)
         throw std::invalid_argument("render: a scene with alpha-tested materials (alphaMode MASK or BLEND) is traced "
                                     "through its BVH only; use --accel bvh or auto");
-    if (accel_ == Accel::bvh) bvh_ = build_scene_bvh(scene, options.bvh, &pool_);
+    if (accel_ == Accel::bvh) {
+        BvhBuildOptions bvh_options = options.bvh;
+        bvh_options.parallelograms_beside = parallelograms_beside_tree(kernels_->width);
+        bvh_ = build_scene_bvh(scene, bvh_options, &pool_);
+    }
     if (scene.light_traces_caustics)
         light_tracing_ = std::make_unique<LightTracingPass>(scene, accel_ == Accel::bvh ? &bvh_.view : nullptr, threads_);
     if (scene.merges_photons) photons_ = std::make_unique<PhotonMaps>(scene);

@@ -19,7 +19,9 @@ struct ReplayAccel {
     ReplayAccel(const Scene& scene, const RenderOptions& options) {
         const int width = intersect_kernels(options.isa.value_or(best_supported_isa())).width;
         use_bvh = resolve_accel(options.accel, scene.primitive_count(), width, !scene.instances.empty()) == Accel::bvh;
-        if (use_bvh) bvh = build_scene_bvh(scene, options.bvh, nullptr);
+        BvhBuildOptions bvh_options = options.bvh;
+        bvh_options.parallelograms_beside = parallelograms_beside_tree(width);
+        if (use_bvh) bvh = build_scene_bvh(scene, bvh_options, nullptr);
     }
     // The tree, or null for the flat list.
     const BvhView* view() const { return use_bvh ? &bvh.view : nullptr; }

@@ -1,6 +1,8 @@
 #include "core/geometry/geometry_soa.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 #include <glm/ext/vector_double3.hpp>
@@ -55,6 +57,22 @@ void TriangleSoA::store_only_for(TriangleTest test) {
 std::size_t TriangleSoA::bytes() const {
     const std::size_t float_rows = 9 + (keeps_vertices_ ? 6 : 0) + (keeps_scaled_normal_ ? 3 : 0);
     return size() * (float_rows * sizeof(float) + sizeof(uint32_t));
+}
+
+TriangleSoA TriangleSoA::first(std::size_t n) const {
+    if (n > size()) throw std::logic_error("TriangleSoA::first: more entries than stored");
+    TriangleSoA out;
+    out.keeps_vertices_ = keeps_vertices_, out.keeps_scaled_normal_ = keeps_scaled_normal_;
+    const auto prefix = [n](const auto& row) { return std::decay_t<decltype(row)>(row.begin(), row.begin() + std::ptrdiff_t(std::min(n, row.size()))); };
+    out.v0x = prefix(v0x), out.v0y = prefix(v0y), out.v0z = prefix(v0z);
+    out.v1x = prefix(v1x), out.v1y = prefix(v1y), out.v1z = prefix(v1z);
+    out.v2x = prefix(v2x), out.v2y = prefix(v2y), out.v2z = prefix(v2z);
+    out.e1x = prefix(e1x), out.e1y = prefix(e1y), out.e1z = prefix(e1z);
+    out.e2x = prefix(e2x), out.e2y = prefix(e2y), out.e2z = prefix(e2z);
+    out.scaled_nx = prefix(scaled_nx), out.scaled_ny = prefix(scaled_ny), out.scaled_nz = prefix(scaled_nz);
+    out.material = prefix(material);
+    out.parallelogram_count = uint32_t(std::min<std::size_t>(parallelogram_count, n));
+    return out;
 }
 
 void SphereSoA::push_back(const glm::vec3& c, float r, uint32_t material_id) {

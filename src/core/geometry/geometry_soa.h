@@ -55,6 +55,8 @@ struct TriangleSoA {
         return size() == 0 || (test == TriangleTest::watertight ? keeps_vertices_ : keeps_scaled_normal_);
     }
     std::size_t bytes() const;
+    // A copy of the first n entries (n <= size()), the same rows stored, bit for bit.
+    TriangleSoA first(std::size_t n) const;
     bool is_parallelogram(std::size_t i) const { return i < parallelogram_count; }
     // A sliver (see is_sliver) is stored collapsed onto its first vertex.
     void push_back(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id);

@@ -16,15 +16,24 @@ enum class Accel {
 };
 
 // The flat ray-packet kernels test as many rays at once as they have lanes, so how many
-// primitives they beat a BVH on grows with the width. Measured with `wavetrace render` on the
-// hexroom plus a UV-sphere mesh of growing size (bench/README.md): the renders took equally
-// long at about 136 primitives with the 8-lane AVX2 kernels and 330 with the 16-lane AVX-512
-// ones, about 20 per lane.
-constexpr uint32_t kBvhCrossoverPrimitivesPerLane = 20;
-
+// primitives they beat a BVH on depends on the width, and not only through it: the 4-lane
+// kernels test an 8-wide node in two halves, so their tree gains least. Measured per width with
+// `wavetrace render` on the hexroom plus a UV-sphere mesh of growing size (bench/README.md,
+// "The crossover"): the number of primitives at which both renders take equally long.
 inline uint32_t bvh_crossover(int kernel_width) {
-    return kBvhCrossoverPrimitivesPerLane * uint32_t(kernel_width > 1 ? kernel_width : 1);
+    switch (kernel_width) {
+        case 4: return 88;
+        case 8: return 72;
+        case 16: return 150;
+        default: return 20;  // the scalar kernels
+    }
 }
+
+// Whether the tree leaves a scene's few parallelograms (a room's walls, floor and lights) out, to
+// be tested beside it (BvhView::beside): by kernels with lanes to test several at once, where
+// the wall a ray hits, found first, bounds its walk. The scalar kernels would test them one by
+// one; for them the tree, which skips most, is faster (bench/README.md, issue 18).
+inline bool parallelograms_beside_tree(int kernel_width) { return kernel_width > 1; }
 
 const char* accel_name(Accel accel);
 std::optional<Accel> parse_accel(const std::string& name);  // "auto", "bvh", "brute"

@@ -63,7 +63,7 @@ private:
     AlignedVector<BvhNode<4>> nodes4_;  // the one of the two that node_width_ names
     AlignedVector<BvhNode<8>> nodes8_;
     BvhPrimitives primitives_;
-    TriangleView beside_{};  // the scene's arrays, read by the kernels for ids [0, stats_.beside_count)
+    TriangleSoA beside_;  // a copy of the scene's first stats_.beside_count entries, its parallelograms
     BvhStats stats_;
 };
 

@@ -133,7 +133,7 @@ Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTe
     const bool beside = options.parallelograms_beside && test == TriangleTest::moller_trumbore &&
                         triangles.parallelogram_count > 0 && triangles.parallelogram_count <= kBvhMostBeside;
     if (beside) {
-        bvh.beside_ = triangle_view(triangles);
+        bvh.beside_ = triangles.first(triangles.parallelogram_count);
         bvh.stats_.beside_count = triangles.parallelogram_count;
     }
     std::vector<PrimRef> refs = primitive_refs(triangles, spheres, uint32_t(bvh.stats_.beside_count), *pool);
@@ -191,7 +191,7 @@ BvhView bvh_view(const Bvh& bvh) {
     v.max_depth = bvh.stats_.max_depth;
     v.leaves = bvh.primitives_.blocks.data();
     v.leaf_rows = bvh.primitives_.rows();
-    v.beside = bvh.beside_;
+    v.beside = triangle_view(bvh.beside_);
     v.beside_count = uint32_t(bvh.stats_.beside_count);
     return v;
 }

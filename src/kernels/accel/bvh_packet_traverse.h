@@ -115,60 +115,66 @@ void trace_bvh_packets(const BvhView& bvh, const RayView& rays, QueryOutput<Q> o
         const vbool<N> negative[3] = {simd::asInt(r.d.x) < vint<N>(0), simd::asInt(r.d.y) < vint<N>(0),
                                       simd::asInt(r.d.z) < vint<N>(0)};
         TreePacketState<Q, N> state(r);
-        // The parallelograms beside the tree first (bvh_view.h), each broadcast to the packet.
-        if constexpr (T == TriangleTest::moller_trumbore)
-            for (uint32_t k = 0; k < bvh.beside_count && !state.done(); ++k) {
-                LaneHits<N> h;
-                const vbool<N> hit = intersect_triangles<Planar::parallelogram>(tr, broadcast_triangle<T, N>(bvh.beside, k),
-                                                                                r.active, state.limit(), h);
-                state.record(r.active & hit, h, vint<N>(int32_t(k)));
-            }
-        if (state.done()) {  // every ray blocked by a wall
-            state.write(out, first, r.count);
-            continue;
-        }
-        uint32_t stack_ref[kBvhStackSize];
-        float stack_t[kBvhStackSize];
-        int top = 0;
-        uint32_t ref = bvh.root;
-        for (;;) {
-            if (!(ref & kBvhLeafBit)) {
-                const BvhNode<W>& node = nodes[ref];
-                const vfloat<N> reach = state.reach();
-                const int base = top;
-                for (int c = 0; c < W; ++c) {
-                    if (node.child[c] == kBvhEmptyChild) continue;
-                    vfloat<N> enter(0.0f), leave(kInfinity);
-                    for (int a = 0; a < 3; ++a) {
-                        const vfloat<N> t0 = simd::msub(vfloat<N>(node.bounds[2 * a][c]), inv_d[a], o_inv_d[a]);
-                        const vfloat<N> t1 = simd::msub(vfloat<N>(node.bounds[2 * a + 1][c]), inv_d[a], o_inv_d[a]);
-                        // A NaN slab distance (inf - inf) is dropped: max/min return their second operand then.
-                        enter = simd::max(simd::select(negative[a], t1, t0), enter);
-                        leave = simd::min(simd::select(negative[a], t0, t1), leave);
+        // The parallelograms beside the tree (bvh_view.h), each broadcast to the packet: first for
+        // closest hits, whose walk the walls bound; last for any hits, whose walk they cannot
+        // shorten, so rays the tree blocks never test them.
+        const auto test_beside = [&]() __attribute__((always_inline)) {
+            if constexpr (T == TriangleTest::moller_trumbore)
+                for (uint32_t k = 0; k < bvh.beside_count && !state.done(); ++k) {
+                    LaneHits<N> h;
+                    const vbool<N> hit = intersect_triangles<Planar::parallelogram>(
+                        tr, broadcast_triangle<T, N>(bvh.beside, k), r.active, state.limit(), h);
+                    state.record(r.active & hit, h, vint<N>(int32_t(k)));
+                }
+        };
+        const auto walk = [&]() __attribute__((always_inline)) {
+            uint32_t stack_ref[kBvhStackSize];
+            float stack_t[kBvhStackSize];
+            int top = 0;
+            uint32_t ref = bvh.root;
+            for (;;) {
+                if (!(ref & kBvhLeafBit)) {
+                    const BvhNode<W>& node = nodes[ref];
+                    const vfloat<N> reach = state.reach();
+                    const int base = top;
+                    for (int c = 0; c < W; ++c) {
+                        if (node.child[c] == kBvhEmptyChild) continue;
+                        vfloat<N> enter(0.0f), leave(kInfinity);
+                        for (int a = 0; a < 3; ++a) {
+                            const vfloat<N> t0 = simd::msub(vfloat<N>(node.bounds[2 * a][c]), inv_d[a], o_inv_d[a]);
+                            const vfloat<N> t1 = simd::msub(vfloat<N>(node.bounds[2 * a + 1][c]), inv_d[a], o_inv_d[a]);
+                            // A NaN slab distance (inf - inf) is dropped: max/min return their second operand then.
+                            enter = simd::max(simd::select(negative[a], t1, t0), enter);
+                            leave = simd::min(simd::select(negative[a], t0, t1), leave);
+                        }
+                        leave = simd::min(leave * vfloat<N>(kRobustFarScale), reach);
+                        const vbool<N> entered = r.active & (enter <= leave);
+                        if (simd::none(entered)) continue;
+                        stack_ref[top] = node.child[c];
+                        stack_t[top] = simd::reduce_min(simd::select(entered, enter, vfloat<N>(kInfinity)));
+                        ++top;
                     }
-                    leave = simd::min(leave * vfloat<N>(kRobustFarScale), reach);
-                    const vbool<N> entered = r.active & (enter <= leave);
-                    if (simd::none(entered)) continue;
-                    stack_ref[top] = node.child[c];
-                    stack_t[top] = simd::reduce_min(simd::select(entered, enter, vfloat<N>(kInfinity)));
-                    ++top;
+                    if (top > base) {
+                        if constexpr (Q == Query::closest) sort_far_to_near(stack_ref + base, stack_t + base, top - base);
+                        ref = stack_ref[--top];
+                        continue;
+                    }
+                } else {
+                    test_leaf_packet<T, S, Q, N>(bvh, ref, r, tr, state);
+                    if (state.done()) break;
                 }
-                if (top > base) {
-                    if constexpr (Q == Query::closest) sort_far_to_near(stack_ref + base, stack_t + base, top - base);
-                    ref = stack_ref[--top];
-                    continue;
-                }
-            } else {
-                test_leaf_packet<T, S, Q, N>(bvh, ref, r, tr, state);
-                if (state.done()) break;
+                // The farthest any active lane still looks: entries beyond it cannot matter.
+                const float reach = simd::reduce_max(simd::select(r.active, state.reach(), vfloat<N>(-kInfinity)));
+                bool next = false;
+                while (top > 0 && !next) next = stack_t[--top] <= reach;
+                if (!next) break;
+                ref = stack_ref[top];
             }
-            // The farthest any active lane still looks: entries beyond it cannot matter.
-            const float reach = simd::reduce_max(simd::select(r.active, state.reach(), vfloat<N>(-kInfinity)));
-            bool next = false;
-            while (top > 0 && !next) next = stack_t[--top] <= reach;
-            if (!next) break;
-            ref = stack_ref[top];
-        }
+        };
+        if constexpr (Q == Query::closest) test_beside();
+        if (!state.done()) walk();
+        if constexpr (Q == Query::any)
+            if (!state.done()) test_beside();
         state.write(out, first, r.count);
     }
 }

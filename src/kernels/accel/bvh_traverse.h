@@ -168,16 +168,24 @@ template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L, typename S
 WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, State& state) {
     const SingleRay<L> ray = broadcast_ray<L>(rays, i);
     const TriangleRays<T, L> tri_ray(ray.o, ray.d);
-    // The parallelograms beside the tree first (bvh_view.h): the wall a ray hits bounds its walk.
-    if constexpr (T == TriangleTest::moller_trumbore)
-        if (bvh.beside_count > 0) {
-            test_planar_run<Planar::parallelogram>(tri_ray, FlatTriangles<T>{bvh.beside, 0}, bvh.beside_count, state);
-            if (state.done()) return;
-        }
+    // The parallelograms beside the tree (bvh_view.h): first for closest hits, where the wall a
+    // ray hits bounds its walk; last for any hits, whose walk they cannot shorten, so rays the
+    // tree blocks never test them.
+    const auto test_beside = [&]() __attribute__((always_inline)) {
+        if constexpr (T == TriangleTest::moller_trumbore)
+            if (bvh.beside_count > 0)
+                test_planar_run<Planar::parallelogram>(tri_ray, FlatTriangles<T>{bvh.beside, 0}, bvh.beside_count, state);
+    };
+    if constexpr (Q == Query::closest) {
+        test_beside();
+        if (state.done()) return;
+    }
     const BoxRay<V> box_ray(rays, i);
     traverse_tree<Q, W, V>(bvh.nodes, bvh.root, box_ray, state, [&](uint32_t ref) __attribute__((always_inline)) {
         test_leaf<T, S, L>(bvh, ref, ray, tri_ray, state);
     });
+    if constexpr (Q == Query::any)
+        if (!state.done()) test_beside();
 }
 
 // Lanes of a leaf test (a leaf holds at most 8 primitives) and of a node's box test, for
