@@ -129,7 +129,7 @@ Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTe
     Bvh bvh;
     bvh.node_width_ = options.node_width;
     bvh.primitives_.test = test;
-    // A few parallelograms (a room's walls) are tested beside the tree, from the scene's arrays.
+    // A few parallelograms (a room's walls) are tested beside the tree, from a copy of their rows.
     const bool beside = options.parallelograms_beside && test == TriangleTest::moller_trumbore &&
                         triangles.parallelogram_count > 0 && triangles.parallelogram_count <= kBvhMostBeside;
     if (beside) {

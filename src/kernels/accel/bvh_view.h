@@ -66,9 +66,10 @@ struct BvhView {
     // without instances traces this tree alone, as before instances existed.
     const InstanceView* instances = nullptr;
     // The scene's parallelograms when it has only a few (its walls, floor and lights): tested
-    // flat, SIMD, before the tree, and left out of it. Boxes that big would each cover most of
-    // the tree, and every ray would walk into them; tested first, the one a ray hits bounds its
-    // walk. From the scene's own arrays, ids [0, beside_count). 0: the tree holds them.
+    // flat, SIMD, beside the tree, and left out of it. Boxes that big would each cover most of
+    // the tree, and every ray would walk into them. Closest hits test them before the walk (the
+    // one a ray hits bounds it), any hits after it. The BVH's copy of their rows (Bvh::beside_),
+    // ids [0, beside_count). 0: the tree holds them.
     TriangleView beside{};
     uint32_t beside_count = 0;
     // A scene with alpha-tested materials: every candidate hit is asked about first
