@@ -4,15 +4,20 @@
 // flat loop's order does, so there is no "either of two" to allow, even on shared edges.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <set>
+#include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "bvh_test_scenes.h"
+#include "core/system/thread_pool.h"
 #include "kernels/accel/bvh.h"
+#include "kernels/accel/sah_builder.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "sanitizer_scale.h"
 #include "test_scenes.h"
@@ -192,6 +197,7 @@ TEST(Bvh, BuildInvariantsAndDeterminism) {
     const Scene scene = build_scene(test::hexroom_with_meshes(8, 8, 1));
     ASSERT_GT(scene.triangles.parallelogram_count, 0u);
     ASSERT_LE(scene.triangles.parallelogram_count, kBvhMostBeside);
+    ASSERT_GT(scene.spheres.size(), 0u) << "sphere leaves, whose blocks use only their first rows";
     for (const bool beside : {true, false})
     for (int width : {4, 8}) {
         SCOPED_TRACE(beside ? "parallelograms beside the tree" : "parallelograms in the tree");
@@ -208,6 +214,9 @@ TEST(Bvh, BuildInvariantsAndDeterminism) {
         EXPECT_EQ(ids, expected) << "every primitive exactly once, width " << width;
         EXPECT_LE(reference.max_leaf_size, 8u);
         EXPECT_TRUE(reference.leaves_one_kind);
+        // The blocks are allocated without zeroing (their pages first touched by the threads
+        // that fill them): every float must be written, the unused rows of a sphere leaf too.
+        EXPECT_TRUE(reference.sphere_rows_past_id_zero);
         for (int threads : {2, 3}) {
             const test::BvhDump other = test::dump_bvh(bvh_view(build_bvh(scene, {width, 8, threads, beside})));
             EXPECT_TRUE(other == reference) << "tree differs with " << threads << " threads, width " << width;
@@ -222,6 +231,53 @@ TEST(Bvh, RejectsBadOptions) {
     EXPECT_THROW(build_bvh(scene, {2, 8, 1}), std::invalid_argument);
     EXPECT_THROW(build_bvh(scene, {8, 0, 1}), std::invalid_argument);
     EXPECT_THROW(build_bvh(scene, {8, 9, 1}), std::invalid_argument);
+}
+
+// A reference keeps its id, kind and bins in the fourth lanes of its corners. Read as floats
+// those are mostly denormals, and arithmetic on them took microcode assists that were most of
+// the build's time: its box and centroid must be those of its corners alone, lane 3 zero.
+TEST(SahBuilder, ReferenceBoxAndCentroidIgnoreTheIdKindAndBinsBesideTheCorners) {
+    auto lanes = [](__m128 v) {
+        std::array<uint32_t, 4> bits;
+        std::memcpy(bits.data(), &v, sizeof v);
+        return bits;
+    };
+    PrimRef plain{}, tagged{};
+    for (PrimRef* r : {&plain, &tagged}) {
+        r->lo[0] = -1.0f, r->lo[1] = 2.0f, r->lo[2] = 0.5f;
+        r->hi[0] = 3.0f, r->hi[1] = 2.5f, r->hi[2] = 4.0f;
+    }
+    tagged.id = 12345;  // a denormal as a float
+    tagged.kind = uint8_t(BvhLeafKind::sphere);
+    tagged.bin[0] = 31, tagged.bin[1] = 7, tagged.bin[2] = 200;
+    EXPECT_EQ(lanes(tagged.box().lo), lanes(plain.box().lo));
+    EXPECT_EQ(lanes(tagged.box().hi), lanes(plain.box().hi));
+    EXPECT_EQ(lanes(tagged.centroid_times_two()), lanes(plain.centroid_times_two()));
+    EXPECT_EQ(lanes(tagged.box().lo)[3], 0u);
+    EXPECT_EQ(lanes(tagged.box().hi)[3], 0u);
+    EXPECT_EQ(lanes(tagged.centroid_times_two())[3], 0u);
+    EXPECT_EQ(lanes(tagged.centroid_times_two())[0], lanes(_mm_set1_ps(2.0f))[0]);  // -1 + 3
+}
+
+TEST(SahBuilder, LeafBlockMustBeAPowerOfTwo) {
+    ThreadPool pool(1);
+    for (uint32_t block : {0u, 3u, 6u}) {
+        PrimRefs refs(4);
+        SahSettings settings;
+        settings.leaf_block = block;
+        EXPECT_THROW(build_binary_sah(refs, settings, pool), std::invalid_argument) << "leaf block " << block;
+    }
+    for (uint32_t block : {1u, 8u}) {
+        PrimRefs refs(2);
+        for (uint32_t i = 0; i < 2; ++i) {
+            const float x = float(i);
+            refs[i] = PrimRef{{x, 0.0f, 0.0f}, i, {x + 0.5f, 1.0f, 1.0f}, uint8_t(BvhLeafKind::triangle), {0, 0, 0}};
+        }
+        SahSettings settings;
+        settings.leaf_block = block;
+        const BinaryTree tree = build_binary_sah(refs, settings, pool);
+        EXPECT_TRUE(tree.nodes[tree.root].is_leaf()) << "two triangles under the leaf size make one leaf, leaf block " << block;
+    }
 }
 
 }  // namespace

@@ -185,11 +185,15 @@ struct BvhDump {
     std::vector<uint32_t> refs;
     std::vector<float> bounds;
     std::vector<uint32_t> primitive_ids;  // in leaf order
+    std::vector<uint32_t> leaf_bits;      // every float of every leaf block, as bits, in leaf order
     std::size_t leaf_count = 0;
     uint32_t max_leaf_size = 0;
     bool parents_contain_children = true;
     bool leaves_one_kind = true;
-    bool operator==(const BvhDump& o) const { return refs == o.refs && bounds == o.bounds && primitive_ids == o.primitive_ids; }
+    bool sphere_rows_past_id_zero = true;  // a sphere leaf's rows past its ids, unused, written as 0
+    bool operator==(const BvhDump& o) const {
+        return refs == o.refs && bounds == o.bounds && primitive_ids == o.primitive_ids && leaf_bits == o.leaf_bits;
+    }
 };
 
 namespace detail {
@@ -216,6 +220,12 @@ inline Bounds walk(const BvhView& v, uint32_t ref, BvhDump& out) {
         const float* block = v.leaves + std::size_t(first) * v.leaf_rows;
         auto at = [&](uint32_t row, uint32_t lane) { return block[row * count + lane]; };
         auto vec = [&](uint32_t row, uint32_t lane) { return glm::vec3(at(row, lane), at(row + 1, lane), at(row + 2, lane)); };
+        for (uint32_t i = 0; i < count * v.leaf_rows; ++i) {
+            uint32_t bits;
+            std::memcpy(&bits, block + i, sizeof bits);
+            out.leaf_bits.push_back(bits);
+            if (sphere && i >= kSphereRows * count) out.sphere_rows_past_id_zero &= bits == 0u;
+        }
         for (uint32_t l = 0; l < count; ++l) {
             uint32_t id;
             const float id_bits = at(rows - 1, l);

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <new>
+#include <utility>
 #include <vector>
 
 namespace wt {
@@ -33,5 +34,29 @@ struct AlignedAllocator {
 
 template <typename T>
 using AlignedVector = std::vector<T, AlignedAllocator<T>>;
+
+// For a large buffer every element of which is written before it is read, by parallel jobs:
+// resize() leaves the new elements uninitialised instead of zeroing them on one thread, so the
+// pages are first touched (faulted in) by the threads that fill them.
+template <typename T, std::size_t Alignment = 64>
+struct UninitialisedAllocator : AlignedAllocator<T, Alignment> {
+    template <typename U>
+    struct rebind {
+        using other = UninitialisedAllocator<U, Alignment>;
+    };
+    using AlignedAllocator<T, Alignment>::AlignedAllocator;
+
+    template <typename U>
+    void construct(U* p) noexcept {
+        ::new (static_cast<void*>(p)) U;  // default-initialised: no value for a float
+    }
+    template <typename U, typename... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+
+template <typename T>
+using UninitialisedVector = std::vector<T, UninitialisedAllocator<T>>;
 
 }  // namespace wt

@@ -48,7 +48,7 @@ PrimRef triangle_ref(const TriangleSoA& t, std::size_t i) {
 
 // In scene id order, in parallel over fixed chunks: count what each chunk keeps, then fill.
 // The first `beside` triangles stay out (tested beside the tree).
-std::vector<PrimRef> primitive_refs(const TriangleSoA& t, const SphereSoA& s, uint32_t beside, ThreadPool& pool) {
+PrimRefs primitive_refs(const TriangleSoA& t, const SphereSoA& s, uint32_t beside, ThreadPool& pool) {
     constexpr std::size_t kChunk = 1 << 16;
     const std::size_t chunks = (t.size() + kChunk - 1) / kChunk;
     std::vector<std::size_t> kept(chunks + 1, 0);
@@ -56,7 +56,7 @@ std::vector<PrimRef> primitive_refs(const TriangleSoA& t, const SphereSoA& s, ui
         for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i) kept[c + 1] += i >= beside && !never_hit(t, i);
     });
     for (std::size_t c = 0; c < chunks; ++c) kept[c + 1] += kept[c];
-    std::vector<PrimRef> refs(kept[chunks] + s.size());
+    PrimRefs refs(kept[chunks] + s.size());
     pool.parallel_for(chunks, [&](std::size_t c, int) {
         std::size_t out = kept[c];
         for (std::size_t i = c * kChunk; i < std::min(t.size(), (c + 1) * kChunk); ++i)
@@ -89,10 +89,10 @@ void fill_leaf_blocks(const TriangleSoA& t, const SphereSoA& s, const std::vecto
 
 // The wide nodes, and the leaves' references for fill_leaf_blocks.
 template <int W>
-uint32_t collapse(const BinaryTree& tree, const std::vector<PrimRef>& refs, float pad, AlignedVector<BvhNode<W>>& nodes,
+uint32_t collapse(const BinaryTree& tree, const PrimRefs& refs, float pad, AlignedVector<BvhNode<W>>& nodes,
                   std::vector<uint32_t>& leaves, BvhStats& stats) {
     nodes.reserve(refs.size() / 4 + 1);
-    WideCollapser<W> c(tree, refs, pad, nodes);
+    WideCollapser<W> c(tree, pad, nodes);
     const uint32_t root = c.emit(tree.root);
     leaves = std::move(c.leaves);
     stats.leaf_count = leaves.size();
@@ -136,7 +136,7 @@ Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTe
         bvh.beside_ = triangles.first(triangles.parallelogram_count);
         bvh.stats_.beside_count = triangles.parallelogram_count;
     }
-    std::vector<PrimRef> refs = primitive_refs(triangles, spheres, uint32_t(bvh.stats_.beside_count), *pool);
+    PrimRefs refs = primitive_refs(triangles, spheres, uint32_t(bvh.stats_.beside_count), *pool);
     const std::size_t primitive_count = refs.size();
     if (primitive_count > kBvhMaxLeafPrimitives)
         throw std::invalid_argument("BVH: " + std::to_string(primitive_count) + " primitives, more than the " +
@@ -158,7 +158,7 @@ Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTe
             for (std::size_t i = 0; i < primitive_count; ++i) ids[i] = refs[i].id;
             // The binary tree and the references (36 bytes a primitive) go before the leaf
             // blocks are allocated: the build's peak of memory is while they are filled.
-            std::vector<PrimRef>().swap(refs);
+            PrimRefs().swap(refs);
         }
         fill_leaf_blocks(triangles, spheres, ids, leaves, bvh.primitives_, *pool);
     } else {

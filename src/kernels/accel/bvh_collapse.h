@@ -18,8 +18,7 @@ namespace wt {
 template <int W>
 class WideCollapser {
 public:
-    WideCollapser(const BinaryTree& tree, const std::vector<PrimRef>& refs, float pad, AlignedVector<BvhNode<W>>& nodes)
-        : tree_(tree), refs_(refs), pad_(pad), nodes_(nodes) {}
+    WideCollapser(const BinaryTree& tree, float pad, AlignedVector<BvhNode<W>>& nodes) : tree_(tree), pad_(pad), nodes_(nodes) {}
 
     uint32_t emit(uint32_t binary) {
         const BinaryNode& b = tree_.nodes[binary];
@@ -71,18 +70,16 @@ private:
         return index;
     }
 
-    // The leaf's primitives keep their place in `refs` (the partitions made each leaf a
+    // The leaf's primitives keep their place in the references (the partitions made each leaf a
     // contiguous run there), so the blocks can be filled later, in parallel (fill_leaf_blocks).
     uint32_t emit_leaf(const BinaryNode& b) {
         leaf_area_sum += double(b.box().half_area()) * b.count;
-        const uint32_t kind = refs_[b.first].kind;
-        leaves.push_back(kBvhLeafBit | (kind << kBvhKindShift) | ((b.count - 1) << kBvhCountShift) | b.first);
+        leaves.push_back(kBvhLeafBit | (b.leaf_kind << kBvhKindShift) | ((b.count - 1) << kBvhCountShift) | b.first);
         return leaves.back();
     }
 
     static constexpr float kInf = std::numeric_limits<float>::infinity();
     const BinaryTree& tree_;
-    const std::vector<PrimRef>& refs_;
     const float pad_;
     AlignedVector<BvhNode<W>>& nodes_;
 };

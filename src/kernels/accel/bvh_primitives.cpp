@@ -1,5 +1,6 @@
 #include "kernels/accel/bvh_primitives.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace wt {
@@ -39,6 +40,9 @@ void BvhPrimitives::fill_leaf(const TriangleSoA& t, const SphereSoA& s, uint32_t
         for (uint32_t row = 0; row < data_rows; ++row) block[row * count + l] = r[row];
         block[data_rows * count + l] = id_bits(ids[l]);
     }
+    // A sphere leaf uses only its first rows; the rest of its floats are written too, so no
+    // byte of the blocks is left uninitialised (resize() does not zero them).
+    if (spheres) std::fill(block + kSphereRows * count, block + rows() * count, 0.0f);
 }
 
 }  // namespace wt

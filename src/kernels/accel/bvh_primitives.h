@@ -18,7 +18,7 @@ class ThreadPool;
 
 struct BvhPrimitives {
     TriangleTest test = TriangleTest::moller_trumbore;
-    AlignedVector<float> blocks;
+    UninitialisedVector<float> blocks;  // every float written by fill_leaf
 
     uint32_t rows() const { return test == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows; }
     void resize(std::size_t primitives) { blocks.resize(primitives * rows()); }

@@ -61,9 +61,9 @@ Box placed_box(const Box& b, const AffineTransform& t) {
 }
 
 template <int W>
-uint32_t collapse_top(const BinaryTree& tree, const std::vector<PrimRef>& refs, float pad, AlignedVector<BvhNode<W>>& nodes) {
+uint32_t collapse_top(const BinaryTree& tree, const PrimRefs& refs, float pad, AlignedVector<BvhNode<W>>& nodes) {
     nodes.reserve(refs.size() / 2 + 1);
-    WideCollapser<W> c(tree, refs, pad, nodes);
+    WideCollapser<W> c(tree, pad, nodes);
     return c.emit(tree.root);
 }
 
@@ -110,7 +110,7 @@ std::unique_ptr<InstanceBvh> build_instance_bvh(const Scene& scene, const BvhBui
     }
 
     // The top level: one instance per leaf, its box the mesh's padded object box placed.
-    std::vector<PrimRef> refs(in.instances.size());
+    PrimRefs refs(in.instances.size());
     for (std::size_t k = 0; k < in.instances.size(); ++k) {
         const Instance& inst = in.instances[k];
         const Box padded = local[inst.mesh].padded(rounding_pad(local[inst.mesh], reach[inst.mesh]));

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "core/system/thread_pool.h"
 
@@ -57,10 +59,10 @@ struct Binning {
         }
         scale = _mm_load_ps(s);
     }
-    void bin_of(const PrimRef& r, int32_t out[4]) const {
-        __m128 f = _mm_mul_ps(_mm_sub_ps(r.centroid_times_two(), origin), scale);
-        f = _mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), _mm_set1_ps(float(bins - 1)));
-        _mm_store_si128(reinterpret_cast<__m128i*>(out), _mm_cvttps_epi32(f));
+    // The bins on x, y and z in lanes 0-2.
+    __m128i bins_of(const PrimRef& r) const {
+        const __m128 f = _mm_mul_ps(_mm_sub_ps(r.centroid_times_two(), origin), scale);
+        return _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), _mm_set1_ps(float(bins - 1))));
     }
 };
 
@@ -83,17 +85,21 @@ struct Bins {
     }
     Box box(int a, int k) const { return Box::of(lo[a][k], hi[a][k]); }
     // Also records each reference's bins in it, for the partition.
-    void add(std::vector<PrimRef>& refs, uint32_t first, uint32_t end, const Binning& binning) {
+    void add(PrimRefs& refs, uint32_t first, uint32_t end, const Binning& binning) {
+        // Copies in locals, so they stay in registers: the byte stores of the bins below may
+        // alias anything, and members would be read again from memory for every reference.
+        const Binning map = binning;
         PrimRef* r = refs.data();
-        alignas(16) int32_t b[4];
         for (uint32_t i = first; i < end; ++i) {
-            binning.bin_of(r[i], b);
-            const __m128 plo = _mm_load_ps(r[i].lo), phi = _mm_load_ps(r[i].hi);
+            const __m128i b = map.bins_of(r[i]);
+            const int bin[3] = {_mm_cvtsi128_si32(b), _mm_cvtsi128_si32(_mm_shuffle_epi32(b, 1)),
+                                _mm_cvtsi128_si32(_mm_shuffle_epi32(b, 2))};
+            const __m128 plo = r[i].lo_xyz(), phi = r[i].hi_xyz();
             for (int a = 0; a < 3; ++a) {
-                lo[a][b[a]] = _mm_min_ps(lo[a][b[a]], plo);
-                hi[a][b[a]] = _mm_max_ps(hi[a][b[a]], phi);
-                ++count[a][b[a]];
-                r[i].bin[a] = uint8_t(b[a]);
+                lo[a][bin[a]] = _mm_min_ps(lo[a][bin[a]], plo);
+                hi[a][bin[a]] = _mm_max_ps(hi[a][bin[a]], phi);
+                ++count[a][bin[a]];
+                r[i].bin[a] = uint8_t(bin[a]);
             }
         }
     }
@@ -115,8 +121,15 @@ struct Split {
 
 class Builder {
 public:
-    Builder(std::vector<PrimRef>& refs, const SahSettings& settings, ThreadPool& pool)
-        : refs_(refs), settings_(settings), pool_(pool), nodes_(new BinaryNode[std::max<std::size_t>(1, 2 * refs.size())]) {}
+    Builder(PrimRefs& refs, const SahSettings& settings, ThreadPool& pool)
+        : refs_(refs),
+          settings_(settings),
+          leaf_block_shift_(settings.leaf_block ? uint32_t(__builtin_ctz(settings.leaf_block)) : 0),
+          pool_(pool),
+          nodes_(new BinaryNode[std::max<std::size_t>(1, 2 * refs.size())]) {
+        if (settings.leaf_block == 0 || (settings.leaf_block & (settings.leaf_block - 1)) != 0)
+            throw std::invalid_argument("SAH build: leaf block must be a power of two, got " + std::to_string(settings.leaf_block));
+    }
 
     // The root on this thread (its binning in parallel chunks), then breadth first, the nodes of
     // each level split in parallel, until there are enough subtrees to keep every thread busy
@@ -213,11 +226,14 @@ private:
     }
 
     // Block tests a leaf of `count` primitives costs.
-    float blocks(uint32_t count) const { return float((count + settings_.leaf_block - 1) / settings_.leaf_block); }
+    // A shift, not an integer division by a value known only at run time: the sweep asks this
+    // twice per bin.
+    float blocks(uint32_t count) const { return float((count + settings_.leaf_block - 1) >> leaf_block_shift_); }
 
     bool make_leaf(BinaryNode& n, const Range& range, uint32_t depth) {
         n.first = range.first;
         n.count = range.count;
+        n.leaf_kind = uint32_t(__builtin_ctz(range.kinds));  // one kind
         uint32_t seen = max_depth_.load(std::memory_order_relaxed);
         while (depth > seen && !max_depth_.compare_exchange_weak(seen, depth)) {
         }
@@ -324,8 +340,9 @@ private:
         right.first = split, right.count = range.first + range.count - split;
     }
 
-    std::vector<PrimRef>& refs_;
+    PrimRefs& refs_;
     const SahSettings settings_;
+    const uint32_t leaf_block_shift_;  // log2 of settings_.leaf_block
     ThreadPool& pool_;
     std::unique_ptr<BinaryNode[]> nodes_;
     std::atomic<uint32_t> next_node_{0};
@@ -334,7 +351,7 @@ private:
 
 }  // namespace
 
-BinaryTree build_binary_sah(std::vector<PrimRef>& refs, const SahSettings& settings, ThreadPool& pool) {
+BinaryTree build_binary_sah(PrimRefs& refs, const SahSettings& settings, ThreadPool& pool) {
     return Builder(refs, settings, pool).build();
 }
 

@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/base/aligned_vector.h"
 #include "kernels/accel/bvh_boxes.h"
 
 namespace wt {
@@ -28,16 +29,33 @@ struct alignas(16) PrimRef {
     uint8_t kind;
     uint8_t bin[3];
 
-    Box box() const { return Box::of(_mm_load_ps(lo), _mm_load_ps(hi)); }
-    __m128 centroid_times_two() const { return _mm_add_ps(_mm_load_ps(lo), _mm_load_ps(hi)); }
+    // The corners with their fourth lanes zeroed. Those lanes hold the id, the kind and the
+    // bins, which read as floats are mostly denormals (every id below 2^23), and arithmetic on
+    // a denormal takes a microcode assist of a hundred cycles or more on Intel cores: carried
+    // into the boxes and centroids, they slowed every split search (bench/README.md, "Issue
+    // 18: the build against Embree's").
+    __m128 lo_xyz() const { return _mm_and_ps(_mm_load_ps(lo), xyz_mask()); }
+    __m128 hi_xyz() const { return _mm_and_ps(_mm_load_ps(hi), xyz_mask()); }
+    Box box() const { return Box::of(lo_xyz(), hi_xyz()); }
+    __m128 centroid_times_two() const { return _mm_add_ps(lo_xyz(), hi_xyz()); }
+
+private:
+    static __m128 xyz_mask() { return _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)); }
 };
+
+// Filled in parallel, every element written: not zeroed first on one thread.
+using PrimRefs = UninitialisedVector<PrimRef>;
 
 // Plain registers rather than a Box, so an array of them is not initialised when allocated:
 // the builder allocates room for 2n - 1 nodes and touches only those it makes.
 struct BinaryNode {
     __m128 lo, hi;          // the box
     uint32_t first, count;  // a leaf: refs [first, first + count); count == 0 for an inner node
-    uint32_t left, right;   // an inner node's children
+    union {
+        uint32_t left;       // an inner node's children: left and right
+        uint32_t leaf_kind;  // a leaf's BvhLeafKind, so the collapse need not read it from a ref
+    };
+    uint32_t right;
     bool is_leaf() const { return count > 0; }
     Box box() const { return Box::of(lo, hi); }
 };
@@ -50,7 +68,7 @@ struct BinaryNode {
 // those tried, and the fastest build, since the tree stops splitting earlier.
 struct SahSettings {
     uint32_t max_leaf_size = 8;
-    uint32_t leaf_block = 8;
+    uint32_t leaf_block = 8;  // a power of two
     float node_cost = 1.0f;       // one visit of a binary node, in block tests
     float primitive_cost = 1.0f;  // one block test
 };
@@ -62,6 +80,6 @@ struct BinaryTree {
 };
 
 // Reorders `refs` so every leaf is a contiguous run.
-BinaryTree build_binary_sah(std::vector<PrimRef>& refs, const SahSettings& settings, ThreadPool& pool);
+BinaryTree build_binary_sah(PrimRefs& refs, const SahSettings& settings, ThreadPool& pool);
 
 }  // namespace wt
