@@ -7,11 +7,14 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <set>
 #include <stdexcept>
 #include <vector>
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "bvh_test_scenes.h"
@@ -131,6 +134,41 @@ TEST(Bvh, MeshSceneEqualsFlatKernels) {
         for (Isa isa : supported_isas())
             for (int width : {4, 8}) expect_bvh_matches_flat(scene, rays, flat, isa, {width, 8, 2}, std::string("meshes, ") + name_of(test));
     }
+}
+
+// Shadow rays as a tile sends them: neighbours in the queue start at neighbouring points and
+// go to one light, in runs the meshes block and runs they do not. The random rays of the tests
+// above rarely come in such runs, which are what a traversal that carries anything from one
+// ray to the next (an occluder cache, packets of shadow rays) must answer as the flat list does.
+TEST(Bvh, CoherentShadowRaysEqualFlatKernels) {
+    const Scene scene = build_scene(test::hexroom_with_meshes(8, 8, 1));
+    const TriangleSoA& t = scene.triangles;
+    glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+    for (std::size_t i = t.parallelogram_count; i < t.size(); ++i)  // the meshes' small triangles, not the room's floor
+        if (glm::length(t.edge1(i)) < 1.0f && glm::length(t.edge2(i)) < 1.0f)
+            for (const glm::vec3& v : {t.vertex0(i), t.vertex1(i), t.vertex2(i)}) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    ASSERT_TRUE(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z);
+    const glm::vec3 extent = hi - lo;
+    // The meshes stand on the hexroom's floor (z = -5) under its ceiling (z = 5): the rays start
+    // just above the floor, around and under them, toward a point light below the ceiling.
+    const float floor_z = -4.9f;
+    const glm::vec3 light(0.5f * (lo.x + hi.x), 0.5f * (lo.y + hi.y), 4.5f);
+    constexpr int kSide = 96;
+    test::RayBatch rays;
+    for (int y = 0; y < kSide; ++y)
+        for (int x = 0; x < kSide; ++x) {
+            const glm::vec3 origin(lo.x - 0.5f * extent.x + 2.0f * extent.x * (float(x) + 0.5f) / kSide,
+                                   lo.y - 0.5f * extent.y + 2.0f * extent.y * (float(y) + 0.5f) / kSide, floor_z);
+            const glm::vec3 to_light = light - origin;
+            const float distance = glm::length(to_light);
+            rays.push({origin, to_light / distance}, distance * 0.999f);
+        }
+    const FlatAnswers flat(scene, rays);
+    const std::size_t blocked = std::size_t(std::count(flat.any[1].begin(), flat.any[1].end(), uint8_t(1)));
+    EXPECT_GT(blocked, rays.size() / 10) << "the meshes must block a run of rays";
+    EXPECT_LT(blocked, rays.size() * 9 / 10) << "and leave runs unblocked";
+    for (Isa isa : supported_isas())
+        for (const BvhBuildOptions& o : build_variants()) expect_bvh_matches_flat(scene, rays, flat, isa, o, "coherent shadow rays");
 }
 
 TEST(Bvh, AxisAlignedRaysWithZeroDirectionComponents) {
