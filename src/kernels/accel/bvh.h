@@ -27,6 +27,11 @@ class ThreadPool;
 
 // Scenes with at most this many parallelograms test them beside the tree (BvhView::beside).
 constexpr uint32_t kBvhMostBeside = 16;
+// Trees of more bytes (nodes and leaf blocks) are walked with prefetches (BvhView::prefetch_pushed).
+// A tree that mostly stays in the caches pays for the instructions and gains nothing; chosen
+// between two trees measured on either side (bench/README.md, "Issue 18: the build against
+// Embree's; prefetching for shadow rays").
+constexpr std::size_t kBvhPrefetchBytes = std::size_t(16) << 20;
 
 struct BvhBuildOptions {
     int node_width = 8;     // children per node: 4 or 8

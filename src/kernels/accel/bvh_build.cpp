@@ -193,6 +193,7 @@ BvhView bvh_view(const Bvh& bvh) {
     v.leaf_rows = bvh.primitives_.rows();
     v.beside = triangle_view(bvh.beside_);
     v.beside_count = uint32_t(bvh.stats_.beside_count);
+    v.prefetch_pushed = bvh.stats_.node_bytes + bvh.stats_.primitive_bytes > kBvhPrefetchBytes;
     return v;
 }
 

@@ -106,14 +106,38 @@ WT_KERNEL_INLINE void sort_far_to_near(uint32_t* refs, float* t, int count) {
     }
 }
 
+// Asks for all of an inner node's cache lines, ahead of its visit.
+template <int W>
+WT_KERNEL_INLINE void prefetch_node(const BvhNode<W>* nodes, uint32_t ref) {
+    const char* p = reinterpret_cast<const char*>(nodes + ref);
+    for (int line = 0; line < int(sizeof(BvhNode<W>)) / 64; ++line) __builtin_prefetch(p + 64 * line);
+}
+
+struct NoLeafPrefetch {
+    void operator()(uint32_t) const {}
+};
+
 // The generic loop: one ray's walk of one tree (`tree_nodes`, from child reference `root`),
 // nearest child first for closest hits, test_leaf(ref) at each leaf it reaches, stopping when
 // the state says so. The flat tree's leaves are primitive blocks; the instances' top level's
 // leaves are instances, each of which walks its mesh's tree with this same loop.
-template <Query Q, int W, int V, typename State, typename TestLeaf>
+//
+// Prefetch: an occlusion walk asks for the lines of each child it pushes (prefetch_leaf(ref)
+// for a leaf's block). Its stack is not sorted, and unless a blocker is found every entry is
+// visited, so the lines are wanted soon; asking while pushing lets the misses of a node's
+// entered children overlap. A closest-hit walk may skip its far entries, and does not ask.
+// A template argument, not a run-time flag: the walks of trees that fit in the caches stay
+// exactly as they were.
+template <Query Q, int W, int V, bool Prefetch = false, typename State, typename TestLeaf, typename PrefetchLeaf = NoLeafPrefetch>
 WT_KERNEL_INLINE void traverse_tree(const void* tree_nodes, uint32_t root, const BoxRay<V>& box_ray, State& state,
-                                    TestLeaf&& test_leaf) {
+                                    TestLeaf&& test_leaf, PrefetchLeaf prefetch_leaf = {}) {
     const BvhNode<W>* nodes = static_cast<const BvhNode<W>*>(tree_nodes);
+    const auto prefetch = [&](uint32_t child) __attribute__((always_inline)) {
+        if constexpr (Q == Query::any && Prefetch) {
+            if (!(child & kBvhLeafBit)) prefetch_node<W>(nodes, child);
+            else if (child != kBvhEmptyChild) prefetch_leaf(child);
+        }
+    };
     uint32_t stack_ref[kBvhStackSize];
     float stack_t[kBvhStackSize];
     int top = 0;
@@ -135,14 +159,17 @@ WT_KERNEL_INLINE void traverse_tree(const void* tree_nodes, uint32_t root, const
                     const bool first_nearer = !(t_near[second] < t_near[c]);
                     const int near = first_nearer ? c : second, far = first_nearer ? second : c;
                     stack_ref[top] = node.child[far], stack_t[top] = t_near[far], ++top;
+                    prefetch(node.child[far]);
                     ref = node.child[near];
                     continue;
                 }
                 const int base = top;
                 stack_ref[top] = node.child[c], stack_t[top] = t_near[c], ++top;
+                prefetch(node.child[c]);
                 for (; mask; mask &= mask - 1) {
                     c = __builtin_ctz(mask);
                     stack_ref[top] = node.child[c], stack_t[top] = t_near[c], ++top;
+                    prefetch(node.child[c]);
                 }
                 // Nearest first pays for the closest hit: what it finds culls the rest. An
                 // occlusion query stops at any blocker, so it skips the sort.
@@ -164,7 +191,8 @@ WT_KERNEL_INLINE void traverse_tree(const void* tree_nodes, uint32_t root, const
     }
 }
 
-template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L, typename State>
+// Prefetch: walk with prefetches (traverse_tree; chosen per queue from BvhView::prefetch_pushed).
+template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L, bool Prefetch = false, typename State>
 WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, State& state) {
     const SingleRay<L> ray = broadcast_ray<L>(rays, i);
     const TriangleRays<T, L> tri_ray(ray.o, ray.d);
@@ -181,9 +209,15 @@ WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_
         if (state.done()) return;
     }
     const BoxRay<V> box_ray(rays, i);
-    traverse_tree<Q, W, V>(bvh.nodes, bvh.root, box_ray, state, [&](uint32_t ref) __attribute__((always_inline)) {
-        test_leaf<T, S, L>(bvh, ref, ray, tri_ray, state);
-    });
+    constexpr uint32_t rows = T == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
+    traverse_tree<Q, W, V, Prefetch>(
+        bvh.nodes, bvh.root, box_ray, state,
+        [&](uint32_t ref) __attribute__((always_inline)) { test_leaf<T, S, L>(bvh, ref, ray, tri_ray, state); },
+        [&](uint32_t ref) __attribute__((always_inline)) {  // the whole block: the leaf test reads every row
+            const uint32_t count = ((ref >> kBvhCountShift) & 7u) + 1u;
+            const char* block = reinterpret_cast<const char*>(bvh.leaves + std::size_t(ref & kBvhFirstMask) * rows);
+            for (uint32_t byte = 0; byte < count * rows * uint32_t(sizeof(float)); byte += 64) __builtin_prefetch(block + byte);
+        });
     if constexpr (Q == Query::any)
         if (!state.done()) test_beside();
 }
@@ -205,10 +239,10 @@ WT_KERNEL_INLINE void for_each_ray(const RayView& rays, QueryOutput<Q> out, Trac
     }
 }
 
-template <Query Q, TriangleTest T, SphereTest S, int W, int MaxWidth>
+template <Query Q, TriangleTest T, SphereTest S, int W, int MaxWidth, bool Prefetch>
 void trace_bvh_rays(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
     for_each_ray<Q, MaxWidth>(rays, out, [&](uint32_t i, auto& state) __attribute__((always_inline)) {
-        trace_one<T, S, Q, W, kNodeLanes<W, MaxWidth>, kLeafLanes<MaxWidth>>(bvh, rays, i, state);
+        trace_one<T, S, Q, W, kNodeLanes<W, MaxWidth>, kLeafLanes<MaxWidth>, Prefetch>(bvh, rays, i, state);
     });
 }
 
@@ -223,7 +257,10 @@ WT_KERNEL_INLINE void with_node_width(const BvhView& bvh, F&& f) {
 
 template <Query Q, TriangleTest T, SphereTest S, int MaxWidth>
 void bvh_query(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
-    with_node_width(bvh, [&](auto width) { trace_bvh_rays<Q, T, S, width.value, MaxWidth>(bvh, rays, out); });
+    with_node_width(bvh, [&](auto width) {
+        if (Q == Query::any && bvh.prefetch_pushed) trace_bvh_rays<Q, T, S, width.value, MaxWidth, true>(bvh, rays, out);
+        else trace_bvh_rays<Q, T, S, width.value, MaxWidth, false>(bvh, rays, out);
+    });
 }
 
 }  // namespace WT_SIMD_ISA

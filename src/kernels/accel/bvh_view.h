@@ -72,6 +72,10 @@ struct BvhView {
     // ids [0, beside_count). 0: the tree holds them.
     TriangleView beside{};
     uint32_t beside_count = 0;
+    // The tree is far larger than the caches (kBvhPrefetchBytes): an occlusion walk asks for
+    // each child's lines as it pushes it, so the misses of the siblings it will visit next
+    // overlap instead of each waiting its turn (bvh_traverse.h).
+    bool prefetch_pushed = false;
     // A scene with alpha-tested materials: every candidate hit is asked about first
     // (alpha_filter.h), one ray at a time. Null otherwise, and then no kernel asks.
     AlphaKeepsHit alpha_keeps = nullptr;
