@@ -4,8 +4,8 @@
 //
 // The builder spends its time extending boxes, so a box is two SSE registers (lanes x, y, z;
 // the fourth unused, and kept finite and normal: a denormal there would take a microcode assist
-// in every subtraction and product, see PrimRef::lo_xyz). SSE2 is part of x86-64, so this code runs on every CPU the renderer
-// does, and it is not one of the per-ISA kernels.
+// in every subtraction and product, see PrimRef::lo_xyz). SSE2 is part of x86-64, so this code
+// runs on every CPU the renderer does, and it is not one of the per-ISA kernels.
 
 #include <emmintrin.h>
 
