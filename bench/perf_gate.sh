@@ -33,7 +33,7 @@ for isa in scalar sse4 avx2; do
     for query in closest any; do cases+=("intersect/$isa/$layout/$query"); done
   done
 done
-cases+=("build" "render/scalar" "render/avx2")
+cases+=("build" "render/scalar" "render/avx2" "shade/scalar" "shade/sse4" "shade/avx2")
 
 measure() {  # CASE -> "INSTRUCTIONS CHECKSUM": the collected region's count, the workload's checksum
   local args out count checksum
@@ -98,6 +98,7 @@ for query in closest any; do
   same_result intersect/{scalar,sse4,avx2}/{bvh,bvhpackets}/$query
 done
 same_result render/scalar render/avx2
+same_result shade/{scalar,sse4,avx2}
 
 # Ratios within this run: the SIMD kernels must keep their advantage over scalar.
 ratio() { awk -v a="${measured[$1]}" -v b="${measured[$2]}" 'BEGIN {printf "%.2f", a / b}'; }
@@ -112,6 +113,8 @@ check_ratio intersect/scalar/raypacket/any intersect/avx2/raypacket/any 3
 check_ratio intersect/scalar/raypacket/closest intersect/sse4/raypacket/closest 2
 check_ratio render/scalar render/avx2 1.3
 check_ratio intersect/scalar/bvh/closest intersect/avx2/bvh/closest 2
+check_ratio shade/scalar shade/avx2 4
+check_ratio shade/scalar shade/sse4 2.2
 
 if [ "$failures" -gt 0 ]; then
   echo "perf_gate: $failures check(s) failed. If the change is intended, run bench/perf_gate.sh build --update and commit the baseline."

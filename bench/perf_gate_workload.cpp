@@ -10,6 +10,9 @@
 //   perf_gate_workload SCENE build                  building that BVH on one thread
 //   perf_gate_workload SCENE render ISA [AOVS]      a 24x24, 2 spp hexroom render on one thread; with
 //                                                   AOVS (an --aov list: "all"), rendering those too
+//   perf_gate_workload SCENE shade ISA              the diffuse continuation kernel on the flat diffuse
+//                                                   vertices the incoherent rays hit, past the
+//                                                   roulette's start (kernels/shading)
 
 #include <cstdio>
 #include <cstring>
@@ -23,7 +26,10 @@
 #include "core/film/film.h"
 #include "core/scene/scene.h"
 #include "core/scene_file/scene_loader.h"
+#include "core/path/path_vertex.h"
 #include "kernels/isa/intersect_dispatch.h"
+#include "kernels/isa/shade_kernels.h"
+#include "kernels/queues/ray_queues.h"
 #include "displaced_sphere.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/renderer.h"
@@ -59,7 +65,8 @@ Rays incoherent_rays(uint32_t count) {
 int usage() {
     std::fprintf(stderr, "usage: perf_gate_workload SCENE intersect ISA raypacket|primpacket|bvh|bvhpackets closest|any\n"
                          "       perf_gate_workload SCENE build\n"
-                         "       perf_gate_workload SCENE render ISA [AOV,...]\n");
+                         "       perf_gate_workload SCENE render ISA [AOV,...]\n"
+                         "       perf_gate_workload SCENE shade ISA\n");
     return 2;
 }
 
@@ -122,6 +129,43 @@ int main(int argc, char** argv) {
         CALLGRIND_TOGGLE_COLLECT;
         Checksum sum;
         for (const float value : film.resolve()) sum.add(value);
+        sum.print();
+        return 0;
+    }
+    if (what == "shade" && argc == 4) {
+        const Scene scene = build_scene(description);
+        const Rays rays = incoherent_rays(20000);
+        const std::size_t n = rays.ox.size();
+        std::vector<float> t(n), u(n), v(n);
+        std::vector<uint32_t> prim(n);
+        intersect_kernels(Isa::scalar).closest_raypacket(scene_view(scene), rays.view(), {t.data(), u.data(), v.data(), prim.data()});
+        DiffuseVertexQueue queue;
+        queue.reserve(n);
+        constexpr uint32_t kBounce = 3;  // past rr_start_bounce: the roulette runs
+        for (std::size_t i = 0; i < n; ++i) {
+            if (prim[i] == kNoHit) continue;
+            const Ray ray{{rays.ox[i], rays.oy[i], rays.oz[i]}, {rays.dx[i], rays.dy[i], rays.dz[i]}};
+            const SurfacePoint surface = surface_at(scene, ray, {t[i], prim[i], u[i], v[i]});
+            const Material& m = scene.materials[surface.material];
+            if (!continues_as_flat_diffuse(m, surface)) continue;
+            const PathSeed path{path_key(0, uint32_t(i), 0), 0};
+            const ContinuationRandom random = continuation_random<DefaultEstimator>(scene, path, kBounce);
+            queue.push(surface, m, ray.direction, glm::vec3(0.8f, 0.5f, 0.3f), random.direction.first, random.direction.second,
+                       random.choice_and_roulette.second, uint32_t(i), false);
+        }
+        RayQueue next;
+        next.reserve(queue.count);
+        const ShadeKernels& k = shade_kernels(*isa);
+        CALLGRIND_TOGGLE_COLLECT;
+        k.continue_diffuse(queue, {true, false, false}, next);
+        CALLGRIND_TOGGLE_COLLECT;
+        std::printf("vertices %zu, continued %zu\n", queue.count, next.count);
+        Checksum sum;
+        for (std::size_t i = 0; i < next.count; ++i) {
+            sum.add(next.path[i]), sum.add(next.ox[i]), sum.add(next.oy[i]), sum.add(next.oz[i]);
+            sum.add(next.dx[i]), sum.add(next.dy[i]), sum.add(next.dz[i]);
+            sum.add(next.throughput_r[i]), sum.add(next.throughput_g[i]), sum.add(next.throughput_b[i]);
+        }
         sum.print();
         return 0;
     }

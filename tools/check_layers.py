@@ -46,6 +46,7 @@ LAYERS = [
     ("src/kernels/primitives", "SIMD triangle and sphere tests, SoA views"),
     ("src/kernels/accel", "BVH build and traversal, instance BVH"),
     ("src/kernels/queues", "SoA ray and hit queues"),
+    ("src/kernels/shading", "SIMD shade kernels, generic over the width"),
     ("src/kernels/isa", "per-ISA instantiations and dispatch"),
     ("src/kernels/photons", "photon maps"),
     ("src/kernels/wavefront", "the wavefront stages: generate, intersect, shade, shadow"),

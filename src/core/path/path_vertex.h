@@ -298,6 +298,18 @@ inline uint32_t photon_vertex_limit(const Scene& scene, uint32_t bounce) {
     return uint32_t(scene.settings.max_bounces) - 1 - bounce;
 }
 
+// The random numbers continue_path draws at a vertex: the direction's pair, then the glass's
+// reflect-or-refract choice and Russian roulette's. (The SIMD shade stage draws them with this
+// too, for the vertices whose continuation its kernel computes: kernels/shading.)
+struct ContinuationRandom {
+    UniformPair direction, choice_and_roulette;
+};
+template <typename E>
+inline ContinuationRandom continuation_random(const Scene& scene, const PathSeed& path, uint32_t bounce) {
+    const typename E::Sampler random(path, bounce, uint32_t(scene.settings.shadow_rays));
+    return {random.pair(dim::bsdf_u), random.pair(dim::bsdf_choice)};
+}
+
 // Samples the next direction from the BSDF and applies Russian roulette. Empty when the path
 // ends. `bounce` is the index of the vertex being shaded (0 = first hit);
 // `specular_light_elsewhere` is the incoming ray's (PathContinuation::specular_light_elsewhere).
@@ -307,9 +319,7 @@ inline std::optional<PathContinuation> continue_path(const Scene& scene, const M
                                                      const glm::vec3& d, const glm::vec3& throughput, const PathSeed& path,
                                                      uint32_t bounce, bool specular_light_elsewhere) {
     if (int(bounce) + 1 >= scene.settings.max_bounces) return std::nullopt;
-    const typename E::Sampler random(path, bounce, uint32_t(scene.settings.shadow_rays));
-    const UniformPair direction = random.pair(dim::bsdf_u);
-    const UniformPair choice_and_roulette = random.pair(dim::bsdf_choice);
+    const auto [direction, choice_and_roulette] = continuation_random<E>(scene, path, bounce);
     const FresnelModel fresnel = scene.settings.accuracy.fresnel;
     const BsdfSample s = surface.smooth ? sample_bsdf_about_shading_normal(m, surface.normal, surface.shading_normal, d,
                                                                            direction.first, direction.second,

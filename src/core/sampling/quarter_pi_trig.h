@@ -8,17 +8,22 @@
 // 2e-9 and 1.2e-10, so what is left is float rounding in the Horner steps; the test checks
 // 2 ulp against double-precision sin and cos on the whole range. Plain multiplies and adds
 // (no fused multiply-add, like the rest of the renderer), so every build and ISA gets the same bits.
+// A template over the float type: the SIMD shade kernels (kernels/shading) evaluate the same
+// polynomial on vfloat<N>, so every lane gets the scalar code's bits.
 
 namespace wt {
 
-struct SinCos {
-    float sin, cos;
+template <typename F>
+struct SinCosOf {
+    F sin, cos;
 };
+using SinCos = SinCosOf<float>;
 
-inline SinCos sin_cos_quarter_pi(float x) {
-    const float x2 = x * x;
-    const float s = x + x * x2 * (-1.0f / 6.0f + x2 * (1.0f / 120.0f + x2 * (-1.0f / 5040.0f + x2 * (1.0f / 362880.0f))));
-    const float c = 1.0f + x2 * (-0.5f + x2 * (1.0f / 24.0f + x2 * (-1.0f / 720.0f + x2 * (1.0f / 40320.0f + x2 * (-1.0f / 3628800.0f)))));
+template <typename F>
+inline SinCosOf<F> sin_cos_quarter_pi(F x) {
+    const F x2 = x * x;
+    const F s = x + x * x2 * (-1.0f / 6.0f + x2 * (1.0f / 120.0f + x2 * (-1.0f / 5040.0f + x2 * (1.0f / 362880.0f))));
+    const F c = 1.0f + x2 * (-0.5f + x2 * (1.0f / 24.0f + x2 * (-1.0f / 720.0f + x2 * (1.0f / 40320.0f + x2 * (-1.0f / 3628800.0f)))));
     return {s, c};
 }
 

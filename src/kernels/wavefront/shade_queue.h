@@ -10,6 +10,8 @@
 #include "core/path/listed_light_sampler.h"
 #include "core/scene/material_at_hit.h"
 #include "core/path/path_vertex.h"
+#include "kernels/isa/shade_kernels.h"
+#include "kernels/queues/diffuse_vertex_queue.h"
 #include "kernels/photons/photon_gather.h"
 #include "kernels/photons/photon_maps.h"
 #include "kernels/wavefront/stages.h"
@@ -26,13 +28,22 @@ namespace wt {
 // what escaping rays see, in place of the area lights' alone (stage_shade_listed_lights.cpp,
 // always with kRough: a scene with a lights list is rare enough to test its materials at run
 // time, and a fourth set of instantiations would cost every build for nothing).
+// The flat diffuse vertices' continuations are left to the ISA's kernel (kernels.continue_diffuse,
+// kernels/shading/diffuse_continuation.h): the loop draws their random numbers and queues them in
+// `diffuse`, and the kernel appends their next rays after the other vertices'. Every path's
+// terms are still added in the same order, and each path's random numbers depend on the path
+// alone, so the order of the next queue changes no bit of the image. Not with a lights list,
+// whose continuations also record what escaping rays count.
 template <typename E, bool kRecordAovs, bool kRough, bool kListedLights = false>
-void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
-                 RayQueue& next_rays, ShadowQueue& shadows, const PhotonMaps* photons) {
+void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounce, const RayQueue& rays, const HitQueue& hits,
+                 PathTable& paths, DiffuseVertexQueue& diffuse, RayQueue& next_rays, ShadowQueue& shadows,
+                 const PhotonMaps* photons) {
     const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
     const bool has_lights = !scene.lights.empty();
+    const bool path_continues = int(bounce) + 1 < scene.settings.max_bounces;
     next_rays.count = 0;
     shadows.count = 0;
+    diffuse.count = 0;
     [[maybe_unused]] std::optional<Material> textured;  // kRough: the hit's material with its textures looked up
     for (std::size_t i = 0; i < rays.count; ++i) {
         const Hit hit = hits.hit(i);
@@ -86,6 +97,16 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
             GlossyLightSampler<E>(scene, m, surface, ray.direction, throughput, path, bounce, shadow_ray_count)
                 .sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
         }
+        if constexpr (!kListedLights) {
+            if (continues_as_flat_diffuse(m, surface)) {
+                if (path_continues) {
+                    const ContinuationRandom random = continuation_random<E>(scene, path, bounce);
+                    diffuse.push(surface, m, ray.direction, throughput, random.direction.first, random.direction.second,
+                                 random.choice_and_roulette.second, slot, elsewhere);
+                }
+                continue;
+            }
+        }
         const auto next = continue_path<E, kRough>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere);
         if (next) {
             next_rays.push<E::mis>(*next, slot);
@@ -95,15 +116,22 @@ void shade_queue(const Scene& scene, uint32_t bounce, const RayQueue& rays, cons
             }
         }
     }
+    if constexpr (!kListedLights) {
+        const DiffuseContinuation settings{int(bounce) >= scene.settings.rr_start_bounce, E::mis,
+                                           bounce == 0 ? scene.light_traces_caustics : scene.merges_photons};
+        kernels.continue_diffuse(diffuse, settings, next_rays);
+    }
 }
 
 
 // (Two macros, not one calling the other: E's commas would split it into more arguments.)
 #define WT_SHADE_QUEUE_SIGNATURE(E, record_aovs, rough)                                                                   \
-    void shade_queue<E, record_aovs, rough, false>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&,  \
-                                                   RayQueue&, ShadowQueue&, const PhotonMaps*)
+    void shade_queue<E, record_aovs, rough, false>(const Scene&, const ShadeKernels&, uint32_t, const RayQueue&,           \
+                                                   const HitQueue&, PathTable&, DiffuseVertexQueue&, RayQueue&,           \
+                                                   ShadowQueue&, const PhotonMaps*)
 #define WT_SHADE_QUEUE_SIGNATURE_LIGHTS(E, record_aovs)                                                                   \
-    void shade_queue<E, record_aovs, true, true>(const Scene&, uint32_t, const RayQueue&, const HitQueue&, PathTable&,    \
-                                                 RayQueue&, ShadowQueue&, const PhotonMaps*)
+    void shade_queue<E, record_aovs, true, true>(const Scene&, const ShadeKernels&, uint32_t, const RayQueue&,             \
+                                                 const HitQueue&, PathTable&, DiffuseVertexQueue&, RayQueue&,             \
+                                                 ShadowQueue&, const PhotonMaps*)
 
 }  // namespace wt

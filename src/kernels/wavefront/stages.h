@@ -5,6 +5,7 @@
 #include "core/film/film.h"
 #include "core/scene/scene.h"
 #include "kernels/isa/intersect_kernels.h"
+#include "kernels/isa/shade_kernels.h"
 #include "kernels/queues/ray_queues.h"
 #include "kernels/work/render_stats.h"
 #include "kernels/work/tiles.h"
@@ -40,8 +41,10 @@ void intersect_closest_stage(const IntersectContext& context, const RayQueue& ra
 // AOVs (a non-empty `paths.first_surface`), each path's first surface (core/path/first_surface.h);
 // with `photons` (the batch's maps, when the scene merges photons), their estimate where a path
 // gathers it (gathers_photons).
-void shade_stage(const Scene& scene, uint32_t bounce, const RayQueue& rays, const HitQueue& hits, PathTable& paths,
-                 RayQueue& next_rays, ShadowQueue& shadows, const PhotonMaps* photons);
+// `kernels` continue the flat diffuse vertices, queued in `diffuse` (shade_queue.h).
+void shade_stage(const Scene& scene, const ShadeKernels& kernels, uint32_t bounce, const RayQueue& rays, const HitQueue& hits,
+                 PathTable& paths, DiffuseVertexQueue& diffuse, RayQueue& next_rays, ShadowQueue& shadows,
+                 const PhotonMaps* photons);
 
 // Any-hit test of every shadow ray; unblocked ones add their contribution to their path.
 void shadow_stage(const IntersectContext& context, ShadowQueue& shadows, PathTable& paths);

@@ -15,6 +15,7 @@ void render_batches(const Scene& scene, const IntersectContext& context, uint32_
                     uint32_t step, const AovSelection& aovs, WavefrontWorkspace& ws, Film& film, RayCounts& counts,
                     const PhotonMaps* photons, Generate&& generate) {
     const bool with_aovs = aovs.needs_path_data();
+    const ShadeKernels& shade_kernels_of_isa = shade_kernels(context.kernels->isa);
     for (uint32_t begin = sample_begin; begin < sample_end; begin += step) {
         const uint32_t end = std::min(sample_end, begin + step);
         generate(begin, end);
@@ -23,7 +24,8 @@ void render_batches(const Scene& scene, const IntersectContext& context, uint32_
 
         for (uint32_t bounce = 0; ws.rays.count > 0; ++bounce) {
             intersect_closest_stage(context, ws.rays, ws.hits, bounce == 0);
-            shade_stage(scene, bounce, ws.rays, ws.hits, ws.paths, ws.next_rays, ws.shadows, photons);
+            shade_stage(scene, shade_kernels_of_isa, bounce, ws.rays, ws.hits, ws.paths, ws.diffuse, ws.next_rays, ws.shadows,
+                        photons);
             shadow_stage(context, ws.shadows, ws.paths);
             counts.shadow_rays += ws.shadows.count;
             counts.bounce_rays += ws.next_rays.count;

@@ -1,0 +1,9 @@
+// The shade kernels at width 8, compiled with the avx2 target flags (src/kernels/CMakeLists.txt).
+#include "kernels/isa/shade_kernels.h"
+#include "kernels/shading/diffuse_continuation.h"
+
+namespace wt {
+
+const ShadeKernels kShadeAvx2 = {Isa::avx2, 8, &shading::continue_diffuse_vertices<8>};
+
+}  // namespace wt

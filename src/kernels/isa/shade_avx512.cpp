@@ -1,0 +1,9 @@
+// The shade kernels at width 16, compiled with the avx512 target flags (src/kernels/CMakeLists.txt).
+#include "kernels/isa/shade_kernels.h"
+#include "kernels/shading/diffuse_continuation.h"
+
+namespace wt {
+
+const ShadeKernels kShadeAvx512 = {Isa::avx512, 16, &shading::continue_diffuse_vertices<16>};
+
+}  // namespace wt

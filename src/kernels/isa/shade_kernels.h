@@ -1,0 +1,31 @@
+#pragma once
+// The SIMD shade kernels, compiled once per instruction set (shade_<isa>.cpp) and picked at run
+// time with the intersection kernels' ISA. Only plain declarations here: this header is included
+// by the per-ISA translation units.
+
+#include "kernels/isa/intersect_kernels.h"
+
+namespace wt {
+
+struct DiffuseContinuation;
+struct DiffuseVertexQueue;
+struct RayQueue;
+
+struct ShadeKernels {
+    Isa isa;
+    int width;
+    // continue_path for every vertex of the queue, in its order; the paths that go on are appended
+    // to `next` (kernels/shading/diffuse_continuation.h).
+    void (*continue_diffuse)(const DiffuseVertexQueue&, const DiffuseContinuation&, RayQueue& next);
+};
+
+// Defined in shade_<isa>.cpp, each compiled with its own target flags.
+extern const ShadeKernels kShadeScalar;
+extern const ShadeKernels kShadeSse4;
+extern const ShadeKernels kShadeAvx2;
+extern const ShadeKernels kShadeAvx512;
+
+// Throws std::runtime_error naming the ISA if this CPU cannot run it.
+const ShadeKernels& shade_kernels(Isa isa);
+
+}  // namespace wt

@@ -1,0 +1,9 @@
+// The shade kernels at width 4, compiled with the sse4 target flags (src/kernels/CMakeLists.txt).
+#include "kernels/isa/shade_kernels.h"
+#include "kernels/shading/diffuse_continuation.h"
+
+namespace wt {
+
+const ShadeKernels kShadeSse4 = {Isa::sse4, 4, &shading::continue_diffuse_vertices<4>};
+
+}  // namespace wt
