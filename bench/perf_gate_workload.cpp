@@ -10,12 +10,14 @@
 //   perf_gate_workload SCENE build                  building that BVH on one thread
 //   perf_gate_workload SCENE render ISA [AOVS]      a 24x24, 2 spp hexroom render on one thread; with
 //                                                   AOVS (an --aov list: "all"), rendering those too
-//   perf_gate_workload SCENE shade ISA              the diffuse continuation kernel on the flat diffuse
-//                                                   vertices the incoherent rays hit, past the
-//                                                   roulette's start (kernels/shading)
+//   perf_gate_workload SCENE shade ISA              the shade kernels (kernels/shading) on the flat
+//                                                   diffuse vertices the incoherent rays hit: one
+//                                                   light sample each, then the continuation past
+//                                                   the roulette's start
 
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -140,7 +142,7 @@ int main(int argc, char** argv) {
         std::vector<uint32_t> prim(n);
         intersect_kernels(Isa::scalar).closest_raypacket(scene_view(scene), rays.view(), {t.data(), u.data(), v.data(), prim.data()});
         DiffuseVertexQueue queue;
-        queue.reserve(n);
+        queue.reserve(n, 1);
         constexpr uint32_t kBounce = 3;  // past rr_start_bounce: the roulette runs
         for (std::size_t i = 0; i < n; ++i) {
             if (prim[i] == kNoHit) continue;
@@ -149,22 +151,32 @@ int main(int argc, char** argv) {
             const Material& m = scene.materials[surface.material];
             if (!continues_as_flat_diffuse(m, surface)) continue;
             const PathSeed path{path_key(0, uint32_t(i), 0), 0};
-            const ContinuationRandom random = continuation_random<DefaultEstimator>(scene, path, kBounce);
-            queue.push(surface, m, ray.direction, glm::vec3(0.8f, 0.5f, 0.3f), random.direction.first, random.direction.second,
-                       random.choice_and_roulette.second, uint32_t(i), false);
+            const DefaultEstimator::Sampler random(path, kBounce, 1);
+            const ContinuationRandom draws = continuation_random<DefaultEstimator>(random);
+            const bool samples_lights = gathers_direct_light(m);
+            queue.push(surface, m, ray.direction, glm::vec3(0.8f, 0.5f, 0.3f), draws.direction.first, draws.direction.second,
+                       draws.choice_and_roulette.second, uint32_t(i), false, samples_lights);
+            if (samples_lights) queue.set_light_sample(queue.count - 1, 0, light_sample_point<DefaultEstimator>(scene, random, 0));
         }
         RayQueue next;
         next.reserve(queue.count);
+        ShadowQueue shadows;
+        shadows.reserve(queue.count);
         const ShadeKernels& k = shade_kernels(*isa);
         CALLGRIND_TOGGLE_COLLECT;
+        k.sample_diffuse_lights(queue, {1, false, std::numeric_limits<float>::infinity()}, shadows);
         k.continue_diffuse(queue, {true, false, false}, next);
         CALLGRIND_TOGGLE_COLLECT;
-        std::printf("vertices %zu, continued %zu\n", queue.count, next.count);
+        std::printf("vertices %zu, shadow rays %zu, continued %zu\n", queue.count, shadows.count, next.count);
         Checksum sum;
         for (std::size_t i = 0; i < next.count; ++i) {
             sum.add(next.path[i]), sum.add(next.ox[i]), sum.add(next.oy[i]), sum.add(next.oz[i]);
             sum.add(next.dx[i]), sum.add(next.dy[i]), sum.add(next.dz[i]);
             sum.add(next.throughput_r[i]), sum.add(next.throughput_g[i]), sum.add(next.throughput_b[i]);
+        }
+        for (std::size_t i = 0; i < shadows.count; ++i) {
+            sum.add(shadows.path[i]), sum.add(shadows.dx[i]), sum.add(shadows.dy[i]), sum.add(shadows.dz[i]), sum.add(shadows.tmax[i]);
+            sum.add(shadows.contribution_r[i]), sum.add(shadows.contribution_g[i]), sum.add(shadows.contribution_b[i]);
         }
         sum.print();
         return 0;

@@ -1,9 +1,11 @@
 // The SIMD shade kernels against the scalar vertex code they replace, bit for bit, on every ISA
-// this CPU runs: the diffuse continuation kernel (kernels/shading/diffuse_continuation.h) against
-// continue_path (core/path/path_vertex.h), on random flat diffuse vertices and on the extremes
+// this CPU runs, on random flat diffuse vertices about the hexroom's light and on the extremes
 // (poles of the frame, grazing directions, the disk's centre and diagonals, black and
-// near-black paths, huge and tiny scales, zero coordinates).
+// near-black paths, huge and tiny scales, zero coordinates): the diffuse continuation kernel
+// (kernels/shading/diffuse_continuation.h) against continue_path, the light sample kernel
+// (kernels/shading/diffuse_light_samples.h) against DirectLightSampler (core/path/path_vertex.h).
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -21,6 +23,7 @@
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/queues/diffuse_vertex_queue.h"
 #include "kernels/queues/ray_queues.h"
+#include "test_scenes.h"
 
 namespace wt {
 namespace {
@@ -103,7 +106,7 @@ constexpr FixedDraws kFixedDraws[] = {{0.5f, 0.5f}, {0.0f, 0.0f}, {0.25f, 0.25f}
 template <typename E>
 void expect_kernel_equals_continue_path(const ShadeKernels& kernels, uint32_t bounce, bool light_traces_caustics,
                                         bool merges_photons, uint32_t seed) {
-    Scene scene;
+    Scene scene = build_scene(test::hexroom(8, 8, 1));
     scene.settings.max_bounces = 8;
     scene.settings.rr_start_bounce = 2;
     scene.settings.shadow_rays = 2;
@@ -115,14 +118,14 @@ void expect_kernel_equals_continue_path(const ShadeKernels& kernels, uint32_t bo
     expected.reserve(vertices.size());
     actual.reserve(vertices.size());
     DiffuseVertexQueue queue;
-    queue.reserve(vertices.size());
+    queue.reserve(vertices.size(), 2);
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         const Vertex& v = vertices[i];
         ASSERT_TRUE(continues_as_flat_diffuse(v.material, v.surface));
         ContinuationRandom random = continuation_random<E>(scene, v.path, bounce);
         if (i < std::size(kFixedDraws)) random.direction = {kFixedDraws[i].u0, kFixedDraws[i].u1};
         queue.push(v.surface, v.material, v.d, v.throughput, random.direction.first, random.direction.second,
-                   random.choice_and_roulette.second, uint32_t(i), v.specular_light_elsewhere);
+                   random.choice_and_roulette.second, uint32_t(i), v.specular_light_elsewhere, false);
 
         // continue_path itself for the vertices with their own draws; its body, sample_bsdf and
         // all, for the others.
@@ -187,6 +190,82 @@ void expect_kernel_equals_continue_path(const ShadeKernels& kernels, uint32_t bo
     }
 }
 
+// The light samples of the same kind of vertices, `count` per vertex, against DirectLightSampler.
+template <typename E>
+void expect_light_kernel_equals_direct_light_sampler(const ShadeKernels& kernels, uint32_t bounce, uint32_t count, uint32_t seed) {
+    Scene scene = build_scene(test::hexroom(8, 8, 1));
+    scene.settings.max_bounces = 8;
+    scene.settings.shadow_rays = int(count);
+    scene.settings.estimator.clamp_indirect = E::clamps_indirect ? 0.05f : 0.0f;
+    std::vector<Vertex> vertices = random_vertices(1001, seed);
+    // About the room (its light is on the ceiling, near the origin): most samples reach a ray.
+    for (std::size_t i = 0; i < vertices.size(); i += 2) {
+        Vertex& v = vertices[i];
+        v.surface.position = glm::vec3(v.surface.position.x, v.surface.position.y, v.surface.position.z) * (5.0f / (1.0f + glm::length(v.surface.position)));
+        v.surface.error = rounding_gamma(7) * magnitude(v.surface.position);
+    }
+
+    ShadowQueue expected, actual;
+    expected.reserve(vertices.size() * count);
+    actual.reserve(vertices.size() * count);
+    DiffuseVertexQueue queue;
+    queue.reserve(vertices.size(), count);
+    std::size_t sampled = 0;
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const Vertex& v = vertices[i];
+        const bool samples_lights = gathers_direct_light(v.material);
+        sampled += samples_lights;
+        const typename E::Sampler random(v.path, bounce, count);
+        queue.push(v.surface, v.material, v.d, v.throughput, 0.0f, 0.0f, 0.0f, uint32_t(i), false, samples_lights);
+        if (!samples_lights) continue;
+        for (uint32_t j = 0; j < count; ++j) queue.set_light_sample(i, j, light_sample_point<E>(scene, random, j));
+        const DirectLightSampler<E> sampler(scene, v.material, v.surface, light_sampling_point(v.surface, v.d), v.d, v.throughput,
+                                            v.path, bounce, count);
+        sampler.sample_all([&](const ShadowRay& shadow) { expected.push(shadow, uint32_t(i)); });
+    }
+    const DiffuseLightSampling settings{count, E::mis && int(bounce) + 1 < scene.settings.max_bounces,
+                                        light_sample_clamp_limit<E>(scene, bounce, count)};
+    kernels.sample_diffuse_lights(queue, settings, actual);
+
+    const std::string reproduce = std::string("isa ") + isa_name(kernels.isa) + ", bounce " + std::to_string(bounce) +
+                                  ", mis " + std::to_string(E::mis) + ", clamps " + std::to_string(E::clamps_indirect) +
+                                  ", seed " + std::to_string(seed) + " (reproduce: kernels_test --gtest_filter='ShadeKernels.*')";
+    // Both sides: samples that trace a ray and samples that cannot contribute.
+    EXPECT_GT(expected.count, sampled * count / 4) << reproduce;
+    EXPECT_LT(expected.count, sampled * count) << reproduce;
+    ASSERT_EQ(actual.count, expected.count) << reproduce;
+    // The kernel pushes sample j of N neighbouring vertices together: compared path by path, each
+    // path's samples in the order they were pushed (the order the shadow stage adds them in).
+    const auto by_path = [](const ShadowQueue& q) {
+        std::vector<std::size_t> order(q.count);
+        for (std::size_t k = 0; k < q.count; ++k) order[k] = k;
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return q.path[a] < q.path[b]; });
+        return order;
+    };
+    const std::vector<std::size_t> expected_order = by_path(expected), actual_order = by_path(actual);
+    const auto same_bits = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    for (std::size_t rank = 0; rank < expected.count; ++rank) {
+        const std::size_t e = expected_order[rank], a = actual_order[rank];
+        const uint32_t slot = expected.path[e];
+        ASSERT_EQ(actual.path[a], slot) << reproduce << ", shadow ray " << rank << " in path order";
+        const float* fields[][2] = {{&expected.ox[e], &actual.ox[a]},
+                                    {&expected.oy[e], &actual.oy[a]},
+                                    {&expected.oz[e], &actual.oz[a]},
+                                    {&expected.dx[e], &actual.dx[a]},
+                                    {&expected.dy[e], &actual.dy[a]},
+                                    {&expected.dz[e], &actual.dz[a]},
+                                    {&expected.tmax[e], &actual.tmax[a]},
+                                    {&expected.contribution_r[e], &actual.contribution_r[a]},
+                                    {&expected.contribution_g[e], &actual.contribution_g[a]},
+                                    {&expected.contribution_b[e], &actual.contribution_b[a]}};
+        const char* names[] = {"ox", "oy", "oz", "dx", "dy", "dz", "tmax", "contribution r", "contribution g", "contribution b"};
+        for (int f = 0; f < 10; ++f)
+            ASSERT_TRUE(same_bits(*fields[f][0], *fields[f][1]))
+                << reproduce << ": " << names[f] << " of a sample of vertex " << slot << " is " << *fields[f][1]
+                << ", DirectLightSampler gives " << *fields[f][0] << "; " << describe(vertices[slot]);
+    }
+}
+
 std::vector<Isa> supported_isas() {
     std::vector<Isa> isas;
     for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512})
@@ -207,15 +286,27 @@ TEST(ShadeKernels, DiffuseContinuationEqualsContinuePathBitForBit) {
     }
 }
 
+TEST(ShadeKernels, DiffuseLightSamplesEqualDirectLightSamplerBitForBit) {
+    for (Isa isa : supported_isas()) {
+        const ShadeKernels& kernels = shade_kernels(isa);
+        expect_light_kernel_equals_direct_light_sampler<DefaultEstimator>(kernels, 0, 1, 11);
+        expect_light_kernel_equals_direct_light_sampler<DefaultEstimator>(kernels, 2, 3, 12);
+        // mis at the bounce cap (no BSDF sample competes) and before it; the clamp past the first hit.
+        expect_light_kernel_equals_direct_light_sampler<Estimator<IndependentSampler, LightSampling::mis, false>>(kernels, 7, 2, 13);
+        expect_light_kernel_equals_direct_light_sampler<Estimator<SobolSampler, LightSampling::mis, true>>(kernels, 1, 2, 14);
+        expect_light_kernel_equals_direct_light_sampler<Estimator<StratifiedSampler, LightSampling::nee, true>>(kernels, 3, 1, 15);
+    }
+}
+
 // Vertices past the queue's count are never pushed, whatever the padding lanes hold.
 TEST(ShadeKernels, DiffuseContinuationReadsOnlyTheQueuedVertices) {
     for (Isa isa : supported_isas()) {
         DiffuseVertexQueue queue;
-        queue.reserve(40);
+        queue.reserve(40, 1);
         const std::vector<Vertex> vertices = random_vertices(40, 9);
         for (std::size_t i = 0; i < vertices.size(); ++i) {
             const Vertex& v = vertices[i];
-            queue.push(v.surface, v.material, v.d, glm::vec3(1.0f), 0.3f, 0.6f, 0.0f, uint32_t(i), false);
+            queue.push(v.surface, v.material, v.d, glm::vec3(1.0f), 0.3f, 0.6f, 0.0f, uint32_t(i), false, false);
         }
         RayQueue next;
         next.reserve(40);

@@ -147,6 +147,20 @@ inline float diffuse_direction_pdf(const SurfacePoint& surface, const glm::vec3&
     return folded_cosine_pdf(n, shading_normal_facing(surface.shading_normal, n), wi, cos_geom);
 }
 
+// The point on the area lights that light sample `index` of a vertex aims at, drawn from the
+// vertex's random numbers (`random`, made for its path and bounce). With one emitter the choice
+// is not read, and a sampler whose draws are not cheap skips it. (The SIMD shade stage draws
+// its light samples with this too: kernels/shading.)
+template <typename E>
+[[gnu::always_inline]] inline LightSample light_sample_point(const Scene& scene, const typename E::Sampler& random,
+                                                             uint32_t index) {
+    const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
+    const UniformPair point = random.pair(base + dim::light_u);
+    float choice = 0.0f;
+    if (E::Sampler::kCheapDraws || scene.lights.size() > 1) choice = random(base + dim::light_choice);
+    return scene.lights.sample(scene.triangles, choice, point.first, point.second);
+}
+
 // The light samples of one diffuse vertex (next-event estimation). Sample `index` of `count`
 // estimates f * Le * cos_x * cos_y / (dist^2 * pdf_area), averaged over the `count` shadow rays;
 // with mis, weighted by the power heuristic against the BSDF sampling of the same direction
@@ -194,9 +208,7 @@ public:
     // state around every sample.
     template <bool Folded>
     [[gnu::always_inline]] bool sample(uint32_t index, ShadowRay& s) const {
-        const uint32_t base = dim::light_first + dim::per_shadow_ray * index;
-        const UniformPair point = random_.pair(base + dim::light_u);
-        const LightSample light = scene_.lights.sample(scene_.triangles, light_choice(base), point.first, point.second);
+        const LightSample light = light_sample_point<E>(scene_, random_, index);
         const glm::vec3& n = at_.normal;
         const glm::vec3 to_light = light.position - position_;
         const float dist2 = glm::dot(to_light, to_light);
@@ -225,12 +237,6 @@ public:
     }
 
 private:
-    // With one emitter the choice is not read; a sampler whose draws are not cheap skips it.
-    float light_choice(uint32_t base) const {
-        if constexpr (E::Sampler::kCheapDraws) return random_(base + dim::light_choice);
-        return scene_.lights.size() > 1 ? random_(base + dim::light_choice) : 0.0f;
-    }
-
     const Scene& scene_;
     LightSamplingPoint at_;
     glm::vec3 position_;  // the shading point, before the offset
@@ -305,9 +311,12 @@ struct ContinuationRandom {
     UniformPair direction, choice_and_roulette;
 };
 template <typename E>
-inline ContinuationRandom continuation_random(const Scene& scene, const PathSeed& path, uint32_t bounce) {
-    const typename E::Sampler random(path, bounce, uint32_t(scene.settings.shadow_rays));
+inline ContinuationRandom continuation_random(const typename E::Sampler& random) {
     return {random.pair(dim::bsdf_u), random.pair(dim::bsdf_choice)};
+}
+template <typename E>
+inline ContinuationRandom continuation_random(const Scene& scene, const PathSeed& path, uint32_t bounce) {
+    return continuation_random<E>(typename E::Sampler(path, bounce, uint32_t(scene.settings.shadow_rays)));
 }
 
 // Samples the next direction from the BSDF and applies Russian roulette. Empty when the path

@@ -1,9 +1,11 @@
 // The shade kernels at width 8, compiled with the avx2 target flags (src/kernels/CMakeLists.txt).
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/shading/diffuse_continuation.h"
+#include "kernels/shading/diffuse_light_samples.h"
 
 namespace wt {
 
-const ShadeKernels kShadeAvx2 = {Isa::avx2, 8, &shading::continue_diffuse_vertices<8>};
+const ShadeKernels kShadeAvx2 = {Isa::avx2, 8, &shading::continue_diffuse_vertices<8>,
+                                   &shading::sample_diffuse_lights<8>};
 
 }  // namespace wt

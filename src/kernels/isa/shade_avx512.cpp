@@ -1,9 +1,11 @@
 // The shade kernels at width 16, compiled with the avx512 target flags (src/kernels/CMakeLists.txt).
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/shading/diffuse_continuation.h"
+#include "kernels/shading/diffuse_light_samples.h"
 
 namespace wt {
 
-const ShadeKernels kShadeAvx512 = {Isa::avx512, 16, &shading::continue_diffuse_vertices<16>};
+const ShadeKernels kShadeAvx512 = {Isa::avx512, 16, &shading::continue_diffuse_vertices<16>,
+                                   &shading::sample_diffuse_lights<16>};
 
 }  // namespace wt

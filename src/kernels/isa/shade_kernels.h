@@ -8,8 +8,10 @@
 namespace wt {
 
 struct DiffuseContinuation;
+struct DiffuseLightSampling;
 struct DiffuseVertexQueue;
 struct RayQueue;
+struct ShadowQueue;
 
 struct ShadeKernels {
     Isa isa;
@@ -17,6 +19,9 @@ struct ShadeKernels {
     // continue_path for every vertex of the queue, in its order; the paths that go on are appended
     // to `next` (kernels/shading/diffuse_continuation.h).
     void (*continue_diffuse)(const DiffuseVertexQueue&, const DiffuseContinuation&, RayQueue& next);
+    // The light samples of every vertex of the queue that has them, each vertex's in index order;
+    // those that can contribute are appended to `shadows` (kernels/shading/diffuse_light_samples.h).
+    void (*sample_diffuse_lights)(const DiffuseVertexQueue&, const DiffuseLightSampling&, ShadowQueue& shadows);
 };
 
 // Defined in shade_<isa>.cpp, each compiled with its own target flags.

@@ -1,9 +1,11 @@
 // The shade kernels at width 1, compiled with the scalar target flags (src/kernels/CMakeLists.txt).
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/shading/diffuse_continuation.h"
+#include "kernels/shading/diffuse_light_samples.h"
 
 namespace wt {
 
-const ShadeKernels kShadeScalar = {Isa::scalar, 1, &shading::continue_diffuse_vertices<1>};
+const ShadeKernels kShadeScalar = {Isa::scalar, 1, &shading::continue_diffuse_vertices<1>,
+                                   &shading::sample_diffuse_lights<1>};
 
 }  // namespace wt

@@ -1,9 +1,11 @@
 // The shade kernels at width 4, compiled with the sse4 target flags (src/kernels/CMakeLists.txt).
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/shading/diffuse_continuation.h"
+#include "kernels/shading/diffuse_light_samples.h"
 
 namespace wt {
 
-const ShadeKernels kShadeSse4 = {Isa::sse4, 4, &shading::continue_diffuse_vertices<4>};
+const ShadeKernels kShadeSse4 = {Isa::sse4, 4, &shading::continue_diffuse_vertices<4>,
+                                   &shading::sample_diffuse_lights<4>};
 
 }  // namespace wt

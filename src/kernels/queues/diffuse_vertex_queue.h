@@ -1,10 +1,13 @@
 #pragma once
-// The flat diffuse vertices of one shade stage whose next direction is still to be drawn: what
-// continue_path (core/path/path_vertex.h) reads at such a vertex, with its three random numbers
-// already drawn. The shade loop fills it (shade_queue.h) and the diffuse continuation kernel
-// (kernels/shading/diffuse_continuation.h) empties it N lanes at a time into the next ray queue.
-// Most vertices of most scenes are of this kind, and drawing their directions one at a time
-// was a fifth of a render: a dependent chain of divisions and square roots per path.
+// A chunk of the flat diffuse vertices of one shade stage: what DirectLightSampler and
+// continue_path (core/path/path_vertex.h) read at such a vertex, with its random numbers already
+// drawn and its light samples' points already picked. The shade loop fills it
+// (kernels/wavefront/shade_queue.h) and, whenever it is full and at the end, the shade kernels
+// (kernels/shading) empty it N lanes at a time into the shadow queue and the next ray queue. A
+// chunk rather than the whole stage: it is read back while still in the core's cache, and its
+// size does not grow with the batch times the shadow rays. Most vertices of most scenes are of
+// this kind, and their light samples and next directions, one at a time, were dependent chains
+// of divisions and square roots per path.
 
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +26,13 @@ inline bool continues_as_flat_diffuse(const Material& m, const SurfacePoint& sur
     return (m.type == MaterialType::lambertian || m.type == MaterialType::oren_nayar) && !surface.smooth;
 }
 
+// What DirectLightSampler's choices at one bounce come to for every flat diffuse vertex of it.
+struct DiffuseLightSampling {
+    uint32_t count;          // light samples per vertex (shadow rays), each weighted 1 / count
+    bool mis;                // weighted against the BSDF's sampling of the same direction
+    float clamp_limit;       // per channel, per sample: light_sample_clamp_limit, infinite when not clamped
+};
+
 // What continue_path's choices at one bounce come to for every flat diffuse vertex of it.
 struct DiffuseContinuation {
     bool roulette;  // Russian roulette at this bounce (bounce >= rr_start_bounce)
@@ -33,8 +43,8 @@ struct DiffuseContinuation {
 };
 
 struct DiffuseVertexQueue {
-    // The kernel loads whole vectors: this many entries past `count` are allocated, and what they
-    // hold is computed and thrown away.
+    // The kernels load whole aligned vectors: at least this many entries past `count` are
+    // allocated, and what they hold is computed and thrown away.
     static constexpr std::size_t kPadding = 16;
 
     AlignedVector<float> px, py, pz;              // SurfacePoint::position
@@ -46,23 +56,54 @@ struct DiffuseVertexQueue {
     AlignedVector<float> oren_nayar_a, oren_nayar_b;  // oren_nayar_terms(); 1 and 0 for Lambertian vertices
     AlignedVector<float> u0, u1, roulette;            // dim::bsdf_u, dim::bsdf_v, dim::roulette
     AlignedVector<uint32_t> path;                     // slot in the PathTable
-    // kOrenNayar; kSpecularLightElsewhere: the incoming ray's PathContinuation::specular_light_elsewhere.
+    // kOrenNayar; kSpecularLightElsewhere: the incoming ray's PathContinuation::specular_light_elsewhere;
+    // kSamplesLights: the vertex has light samples (gathers_direct_light, and the scene has lights).
     AlignedVector<uint8_t> flags;
-    static constexpr uint8_t kOrenNayar = 1, kSpecularLightElsewhere = 2;
+    static constexpr uint8_t kOrenNayar = 1, kSpecularLightElsewhere = 2, kSamplesLights = 4;
     std::size_t count = 0;
+    std::size_t capacity = 0;
 
-    void reserve(std::size_t n) {
-        for (auto* a : {&px, &py, &pz, &ex, &ey, &ez, &nx, &ny, &nz, &dx, &dy, &dz, &throughput_r, &throughput_g, &throughput_b,
-                        &albedo_r, &albedo_g, &albedo_b, &oren_nayar_a, &oren_nayar_b, &u0, &u1, &roulette})
-            a->resize(n + kPadding);
-        path.resize(n + kPadding), flags.resize(n + kPadding);
+    // The light samples' points (LightSample), sample-major: sample j of entry i at j * stride + i,
+    // so a kernel reads sample j of N neighbouring vertices as one vector. Written for the entries
+    // with kSamplesLights.
+    AlignedVector<float> light_px, light_py, light_pz, light_ex, light_ey, light_ez, light_nx, light_ny, light_nz;
+    AlignedVector<float> light_r, light_g, light_b, light_pdf_area;
+    std::size_t stride = 0;
+
+    // Vertices per chunk for this many light samples per vertex: 256 (about 40 KB with one light
+    // sample), fewer as the samples grow, 16 at least: a multiple of every width.
+    static constexpr std::size_t chunk_for(std::size_t light_samples_per_vertex) {
+        const std::size_t by_samples = 4096 / (light_samples_per_vertex > 0 ? light_samples_per_vertex : 1) / kPadding * kPadding;
+        return by_samples < kPadding ? kPadding : by_samples > 256 ? 256 : by_samples;
+    }
+    static constexpr std::size_t bytes_needed(std::size_t light_samples_per_vertex) {
+        return (chunk_for(light_samples_per_vertex) + kPadding) *
+               (kBytesPerEntry + light_samples_per_vertex * kBytesPerLightSample);
     }
 
-    // Bytes per entry, for WavefrontWorkspace::bytes_needed.
-    static constexpr std::size_t kBytesPerEntry = 23 * 4 + 4 + 1;
+    bool full() const { return count == capacity; }
 
+    // Room for `n` vertices (a chunk: chunk_for()) of `light_samples_per_vertex` samples each.
+    void reserve(std::size_t n, std::size_t light_samples_per_vertex) {
+        capacity = n;
+        stride = (n + 2 * kPadding - 1) / kPadding * kPadding;  // whole vectors: each sample's row stays aligned
+        for (auto* a : {&px, &py, &pz, &ex, &ey, &ez, &nx, &ny, &nz, &dx, &dy, &dz, &throughput_r, &throughput_g, &throughput_b,
+                        &albedo_r, &albedo_g, &albedo_b, &oren_nayar_a, &oren_nayar_b, &u0, &u1, &roulette})
+            a->resize(stride);
+        path.resize(stride), flags.resize(stride);
+        for (auto* a : {&light_px, &light_py, &light_pz, &light_ex, &light_ey, &light_ez, &light_nx, &light_ny, &light_nz,
+                        &light_r, &light_g, &light_b, &light_pdf_area})
+            a->resize(stride * light_samples_per_vertex);
+    }
+
+    // Bytes per entry and per light sample, for WavefrontWorkspace::bytes_needed.
+    static constexpr std::size_t kBytesPerEntry = 23 * 4 + 4 + 1;
+    static constexpr std::size_t kBytesPerLightSample = 13 * 4;
+
+    // A vertex; its light samples follow with set_light_sample(count - 1, ...) when it has them.
+    // The draws are read only where the path continues past the vertex.
     void push(const SurfacePoint& s, const Material& m, const glm::vec3& d, const glm::vec3& throughput, float bsdf_u,
-              float bsdf_v, float roulette_u, uint32_t slot, bool specular_light_elsewhere) {
+              float bsdf_v, float roulette_u, uint32_t slot, bool specular_light_elsewhere, bool samples_lights) {
         const std::size_t i = count++;
         px[i] = s.position.x, py[i] = s.position.y, pz[i] = s.position.z;
         ex[i] = s.error.x, ey[i] = s.error.y, ez[i] = s.error.z;
@@ -75,7 +116,17 @@ struct DiffuseVertexQueue {
         oren_nayar_a[i] = terms.a, oren_nayar_b[i] = terms.b;
         u0[i] = bsdf_u, u1[i] = bsdf_v, roulette[i] = roulette_u;
         path[i] = slot;
-        flags[i] = uint8_t((oren_nayar ? kOrenNayar : 0) | (specular_light_elsewhere ? kSpecularLightElsewhere : 0));
+        flags[i] = uint8_t((oren_nayar ? kOrenNayar : 0) | (specular_light_elsewhere ? kSpecularLightElsewhere : 0) |
+                           (samples_lights ? kSamplesLights : 0));
+    }
+
+    void set_light_sample(std::size_t entry, uint32_t index, const LightSample& light) {
+        const std::size_t k = index * stride + entry;
+        light_px[k] = light.position.x, light_py[k] = light.position.y, light_pz[k] = light.position.z;
+        light_ex[k] = light.error.x, light_ey[k] = light.error.y, light_ez[k] = light.error.z;
+        light_nx[k] = light.normal.x, light_ny[k] = light.normal.y, light_nz[k] = light.normal.z;
+        light_r[k] = light.radiance.x, light_g[k] = light.radiance.y, light_b[k] = light.radiance.z;
+        light_pdf_area[k] = light.pdf_area;
     }
 };
 

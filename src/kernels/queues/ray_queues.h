@@ -130,17 +130,16 @@ struct WavefrontWorkspace {
     RayQueue rays, next_rays;
     HitQueue hits;
     ShadowQueue shadows;
-    DiffuseVertexQueue diffuse;  // the shade stage's flat diffuse vertices (kernels/wavefront/shade_queue.h)
+    DiffuseVertexQueue diffuse;  // a chunk of the shade stage's flat diffuse vertices (kernels/wavefront/shade_queue.h)
 
     // What the constructor allocates, per path: the path table (2 x 4 + 8 + 4 x 4 bytes, the
     // first surface with AOVs, 3 x 4 with the normals), two ray queues (10 x 4 + 4 + 1), the
-    // hits (3 x 4 + 4), the diffuse vertices (DiffuseVertexQueue::kBytesPerEntry, and its
-    // padding); per shadow ray (10 x 4 + 4 + 1).
+    // hits (3 x 4 + 4); per shadow ray (10 x 4 + 4 + 1); and one chunk of diffuse vertices.
     static constexpr std::size_t bytes_needed(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs,
                                               bool with_normals = false) {
         const std::size_t path_table = 32 + (with_aovs ? sizeof(FirstSurface) : 0) + (with_normals ? 12 : 0);
-        const std::size_t diffuse = (batch_paths + DiffuseVertexQueue::kPadding) * DiffuseVertexQueue::kBytesPerEntry;
-        return batch_paths * (path_table + 2 * 45 + 16) + diffuse + batch_paths * shadow_rays_per_hit * 45;
+        return batch_paths * (path_table + 2 * 45 + 16) + batch_paths * shadow_rays_per_hit * 45 +
+               DiffuseVertexQueue::bytes_needed(shadow_rays_per_hit);
     }
 
     // `with_normals`: the scene has an emitter selection (PathTable::nx).
@@ -150,7 +149,7 @@ struct WavefrontWorkspace {
         next_rays.reserve(batch_paths);
         hits.reserve(batch_paths);
         shadows.reserve(batch_paths * shadow_rays_per_hit);
-        diffuse.reserve(batch_paths);
+        diffuse.reserve(DiffuseVertexQueue::chunk_for(shadow_rays_per_hit), shadow_rays_per_hit);
     }
 };
 

@@ -12,82 +12,15 @@
 // still their oracle (tests/shade_kernels_test.cpp compares every output lane).
 
 #include <cstdint>
-#include <limits>
 
 #include "core/sampling/quarter_pi_trig.h"
 #include "core/sampling/sampling.h"
 #include "kernels/queues/diffuse_vertex_queue.h"
 #include "kernels/queues/ray_queues.h"
-#include "simd/simd.h"
+#include "kernels/shading/lanes.h"
 
 namespace wt::shading {
 inline namespace WT_SIMD_ISA {
-
-using simd::vbool;
-using simd::vfloat;
-using simd::vint;
-
-template <int N>
-struct Lanes3 {
-    vfloat<N> x, y, z;
-};
-
-template <int N>
-inline Lanes3<N> load3(const AlignedVector<float>& x, const AlignedVector<float>& y, const AlignedVector<float>& z,
-                       std::size_t i) {
-    return {vfloat<N>::load(x.data() + i), vfloat<N>::load(y.data() + i), vfloat<N>::load(z.data() + i)};
-}
-
-// glm::dot's order: (x + y) + z.
-template <int N>
-inline vfloat<N> dot(const Lanes3<N>& a, const Lanes3<N>& b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-template <int N>
-inline Lanes3<N> select(vbool<N> m, const Lanes3<N>& a, const Lanes3<N>& b) {
-    return {simd::select(m, a.x, b.x), simd::select(m, a.y, b.y), simd::select(m, a.z, b.z)};
-}
-
-template <int N>
-inline Lanes3<N> negate(const Lanes3<N>& a) {
-    return {-a.x, -a.y, -a.z};
-}
-
-// fmax_float / fmin_float (core/base/float_minmax.h): x when y is NaN, else maxss / minss.
-template <int N>
-inline vfloat<N> fmax_lanes(vfloat<N> x, vfloat<N> y) {
-    return simd::select(y != y, x, simd::max(x, y));
-}
-template <int N>
-inline vfloat<N> fmin_lanes(vfloat<N> x, vfloat<N> y) {
-    return simd::select(y != y, x, simd::min(x, y));
-}
-
-// next_float_up / next_float_down (core/base/ray_offset.h).
-template <int N>
-inline vfloat<N> next_float_up(vfloat<N> v) {
-    const vfloat<N> signed_zero_up = simd::select(v == 0.0f, vfloat<N>(0.0f), v);  // -0 steps as +0
-    const vint<N> bits = simd::asInt(signed_zero_up);
-    const vfloat<N> stepped = simd::asFloat(simd::select(signed_zero_up >= 0.0f, bits + vint<N>(1), bits - vint<N>(1)));
-    return simd::select(v == std::numeric_limits<float>::infinity(), v, stepped);
-}
-template <int N>
-inline vfloat<N> next_float_down(vfloat<N> v) {
-    return -next_float_up<N>(-v);
-}
-
-// offset_ray_origin(p, error, n) (core/base/ray_offset.h).
-template <int N>
-inline Lanes3<N> offset_ray_origin(const Lanes3<N>& p, const Lanes3<N>& error, const Lanes3<N>& n) {
-    const vfloat<N> distance = simd::abs(n.x) * error.x + simd::abs(n.y) * error.y + simd::abs(n.z) * error.z;
-    const auto moved = [&](vfloat<N> coordinate, vfloat<N> normal) {
-        const vfloat<N> offset = distance * normal;
-        const vfloat<N> out = coordinate + offset;
-        return simd::select(offset > 0.0f, next_float_up<N>(out), simd::select(offset < 0.0f, next_float_down<N>(out), out));
-    };
-    return {moved(p.x, n.x), moved(p.y, n.y), moved(p.z, n.z)};
-}
 
 // sample_cosine_hemisphere(u0, u1) (core/sampling/sampling.h): the concentric disk's two
 // octant cases and its centre as selects, one division for both cases.
@@ -125,7 +58,7 @@ void continue_diffuse_vertices(const DiffuseVertexQueue& q, const DiffuseContinu
         const Lanes3<N> d = load3<N>(q.dx, q.dy, q.dz, i);
         const Lanes3<N> geometric = load3<N>(q.nx, q.ny, q.nz, i);
         // sample_bsdf: the normal facing the incoming ray, then sample_diffuse about it.
-        const Lanes3<N> n = select(dot(d, geometric) < 0.0f, geometric, negate(geometric));
+        const Lanes3<N> n = facing(geometric, d);
         const Lanes3<N> wi =
             to_world_normalized<N>(n, sample_cosine_hemisphere<N>(vfloat<N>::load(q.u0.data() + i), vfloat<N>::load(q.u1.data() + i)));
         const vfloat<N> cos_i = dot(n, wi);
@@ -134,13 +67,9 @@ void continue_diffuse_vertices(const DiffuseVertexQueue& q, const DiffuseContinu
         // f * cos / pdf: the albedo, times the Oren-Nayar factor (oren_nayar_factor).
         const Lanes3<N> wo = negate(d);
         const vfloat<N> cos_o = dot(n, wo);
-        const vfloat<N> projected = fmax_lanes<N>(0.0f, dot(wi, wo) - cos_i * cos_o);
-        const vfloat<N> factor = vfloat<N>::load(q.oren_nayar_a.data() + i) +
-                                 vfloat<N>::load(q.oren_nayar_b.data() + i) * projected /
-                                     fmax_lanes<N>(fmax_lanes<N>(cos_i, cos_o), 1e-7f);
-        alignas(64) int32_t oren_nayar[N];
-        for (int lane = 0; lane < N; ++lane) oren_nayar[lane] = q.flags[i + lane] & DiffuseVertexQueue::kOrenNayar;
-        const vbool<N> rough = vint<N>::load(oren_nayar) != vint<N>(0);
+        const vfloat<N> factor = oren_nayar_factor<N>(vfloat<N>::load(q.oren_nayar_a.data() + i),
+                                                      vfloat<N>::load(q.oren_nayar_b.data() + i), cos_i, cos_o, dot(wi, wo));
+        const vbool<N> rough = flag_lanes<N>(q.flags, i, DiffuseVertexQueue::kOrenNayar);
         const Lanes3<N> albedo = load3<N>(q.albedo_r, q.albedo_g, q.albedo_b, i);
         const Lanes3<N> weight = select(rough, Lanes3<N>{albedo.x * factor, albedo.y * factor, albedo.z * factor}, albedo);
 
@@ -159,9 +88,7 @@ void continue_diffuse_vertices(const DiffuseVertexQueue& q, const DiffuseContinu
         const vfloat<N> lanes[10] = {origin.x,     origin.y,     origin.z,     wi.x, wi.y, wi.z,
                                      throughput.x, throughput.y, throughput.z, cos_i * kInvPi};
         for (int k = 0; k < 10; ++k) vfloat<N>::store(out[k], lanes[k]);
-        const std::size_t valid_lanes = q.count - i < std::size_t(N) ? q.count - i : std::size_t(N);
-        uint32_t pushed = simd::movemask(alive) & uint32_t((uint64_t(1) << valid_lanes) - 1);
-        for (; pushed != 0; pushed &= pushed - 1) {
+        for (uint32_t pushed = lanes_below(alive, q.count - i); pushed != 0; pushed &= pushed - 1) {
             const int lane = __builtin_ctz(pushed);
             const std::size_t at = next.count++;
             next.ox[at] = out[0][lane], next.oy[at] = out[1][lane], next.oz[at] = out[2][lane];

@@ -28,12 +28,13 @@ namespace wt {
 // what escaping rays see, in place of the area lights' alone (stage_shade_listed_lights.cpp,
 // always with kRough: a scene with a lights list is rare enough to test its materials at run
 // time, and a fourth set of instantiations would cost every build for nothing).
-// The flat diffuse vertices' continuations are left to the ISA's kernel (kernels.continue_diffuse,
-// kernels/shading/diffuse_continuation.h): the loop draws their random numbers and queues them in
-// `diffuse`, and the kernel appends their next rays after the other vertices'. Every path's
-// terms are still added in the same order, and each path's random numbers depend on the path
-// alone, so the order of the next queue changes no bit of the image. Not with a lights list,
-// whose continuations also record what escaping rays count.
+// The flat diffuse vertices' light samples and continuations are left to the ISA's shade kernels
+// (kernels/shading): the loop draws their random numbers, picks their light points and queues
+// them in `diffuse`, and the kernels append their shadow rays and next rays, a chunk at a time,
+// among the other vertices'. Every path's terms are still added in the same order (its emission and photons
+// here, its light samples in index order by the shadow stage), and each path's random numbers
+// depend on the path alone, so the order of the queues changes no bit of the image. Not with a
+// lights list, whose samplers and continuations are other code.
 template <typename E, bool kRecordAovs, bool kRough, bool kListedLights = false>
 void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounce, const RayQueue& rays, const HitQueue& hits,
                  PathTable& paths, DiffuseVertexQueue& diffuse, RayQueue& next_rays, ShadowQueue& shadows,
@@ -44,6 +45,19 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
     next_rays.count = 0;
     shadows.count = 0;
     diffuse.count = 0;
+    [[maybe_unused]] const auto shade_diffuse_chunk = [&] {
+        if (has_lights) {
+            const DiffuseLightSampling sampling{shadow_ray_count, E::mis && path_continues,
+                                                light_sample_clamp_limit<E>(scene, bounce, shadow_ray_count)};
+            kernels.sample_diffuse_lights(diffuse, sampling, shadows);
+        }
+        if (path_continues) {
+            const DiffuseContinuation continuation{int(bounce) >= scene.settings.rr_start_bounce, E::mis,
+                                                   bounce == 0 ? scene.light_traces_caustics : scene.merges_photons};
+            kernels.continue_diffuse(diffuse, continuation, next_rays);
+        }
+        diffuse.count = 0;
+    };
     [[maybe_unused]] std::optional<Material> textured;  // kRough: the hit's material with its textures looked up
     for (std::size_t i = 0; i < rays.count; ++i) {
         const Hit hit = hits.hit(i);
@@ -86,6 +100,22 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
             paths.add_radiance(slot, throughput * gather_photons(photons->map(path.sample), m, surface, ray.direction,
                                                                  photon_vertex_limit(scene, bounce))
                                                       .radiance);
+        if constexpr (!kListedLights) {
+            if (continues_as_flat_diffuse(m, surface)) {  // the shade kernels' vertex (after the loop)
+                const bool samples_lights = has_lights && gathers_direct_light(m);
+                if (!samples_lights && !path_continues) continue;
+                const typename E::Sampler random(path, bounce, shadow_ray_count);
+                ContinuationRandom draws{};
+                if (path_continues) draws = continuation_random<E>(random);
+                diffuse.push(surface, m, ray.direction, throughput, draws.direction.first, draws.direction.second,
+                             draws.choice_and_roulette.second, slot, elsewhere, samples_lights);
+                if (samples_lights)
+                    for (uint32_t j = 0; j < shadow_ray_count; ++j)
+                        diffuse.set_light_sample(diffuse.count - 1, j, light_sample_point<E>(scene, random, j));
+                if (diffuse.full()) shade_diffuse_chunk();
+                continue;
+            }
+        }
         if constexpr (kListedLights) {
             sample_listed_lights<E>(scene, m, surface, ray.direction, throughput, path, bounce,
                                     [&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
@@ -97,16 +127,6 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
             GlossyLightSampler<E>(scene, m, surface, ray.direction, throughput, path, bounce, shadow_ray_count)
                 .sample_all([&](const ShadowRay& shadow) { shadows.push(shadow, slot); });
         }
-        if constexpr (!kListedLights) {
-            if (continues_as_flat_diffuse(m, surface)) {
-                if (path_continues) {
-                    const ContinuationRandom random = continuation_random<E>(scene, path, bounce);
-                    diffuse.push(surface, m, ray.direction, throughput, random.direction.first, random.direction.second,
-                                 random.choice_and_roulette.second, slot, elsewhere);
-                }
-                continue;
-            }
-        }
         const auto next = continue_path<E, kRough>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere);
         if (next) {
             next_rays.push<E::mis>(*next, slot);
@@ -116,11 +136,7 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
             }
         }
     }
-    if constexpr (!kListedLights) {
-        const DiffuseContinuation settings{int(bounce) >= scene.settings.rr_start_bounce, E::mis,
-                                           bounce == 0 ? scene.light_traces_caustics : scene.merges_photons};
-        kernels.continue_diffuse(diffuse, settings, next_rays);
-    }
+    if constexpr (!kListedLights) shade_diffuse_chunk();
 }
 
 

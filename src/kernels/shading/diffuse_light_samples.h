@@ -1,0 +1,109 @@
+#pragma once
+// The light samples of flat diffuse vertices, N vertices at a time: DirectLightSampler::sample
+// (core/path/path_vertex.h) with the flat BSDF, over a DiffuseVertexQueue whose light points the
+// shade loop has picked, pushing the shadow rays that can contribute into the ShadowQueue. One
+// generic loop per ISA, as diffuse_continuation.h, and bit for bit the scalar code in the same
+// way (tests/shade_kernels_test.cpp). What a vertex's samples share (its ray origin, the BSDF's
+// view-dependent part) is computed once per vertex, as DiffuseBsdfAtView does.
+//
+// Sample j of N neighbouring vertices is pushed together, then sample j + 1: each vertex's samples
+// are in index order, so each path's shadow contributions are added in the order the scalar loop
+// adds them (the shadow stage adds them in queue order).
+
+#include <cstdint>
+
+#include "core/sampling/sampling.h"
+#include "kernels/queues/diffuse_vertex_queue.h"
+#include "kernels/queues/ray_queues.h"
+#include "kernels/shading/lanes.h"
+
+namespace wt::shading {
+inline namespace WT_SIMD_ISA {
+
+template <int N>
+void sample_diffuse_lights(const DiffuseVertexQueue& q, const DiffuseLightSampling& settings, ShadowQueue& shadows) {
+    alignas(64) float out[10][N];  // direction, tmax, contribution of each lane; the origin is per vertex
+    alignas(64) float origins[3][N];
+    const float count = float(settings.count);
+    for (std::size_t i = 0; i < q.count; i += N) {
+        const vbool<N> sampled = flag_lanes<N>(q.flags, i, DiffuseVertexQueue::kSamplesLights);
+        if (lanes_below(sampled, q.count - i) == 0) continue;
+        // light_sampling_point and DiffuseBsdfAtView: the facing normal, the origin moved off the
+        // surface on its side, the view's cosine, f for Lambert.
+        const Lanes3<N> d = load3<N>(q.dx, q.dy, q.dz, i);
+        const Lanes3<N> n = facing(load3<N>(q.nx, q.ny, q.nz, i), d);
+        const Lanes3<N> position = load3<N>(q.px, q.py, q.pz, i);
+        const Lanes3<N> origin = offset_ray_origin<N>(position, load3<N>(q.ex, q.ey, q.ez, i), n);
+        vfloat<N>::store(origins[0], origin.x), vfloat<N>::store(origins[1], origin.y), vfloat<N>::store(origins[2], origin.z);
+        const Lanes3<N> wo = negate(d);
+        const vfloat<N> cos_o = dot(n, wo);
+        const Lanes3<N> albedo = load3<N>(q.albedo_r, q.albedo_g, q.albedo_b, i);
+        const Lanes3<N> lambert{albedo.x * kInvPi, albedo.y * kInvPi, albedo.z * kInvPi};
+        const vfloat<N> oren_nayar_a = vfloat<N>::load(q.oren_nayar_a.data() + i);
+        const vfloat<N> oren_nayar_b = vfloat<N>::load(q.oren_nayar_b.data() + i);
+        const vbool<N> rough = flag_lanes<N>(q.flags, i, DiffuseVertexQueue::kOrenNayar);
+        const Lanes3<N> throughput = load3<N>(q.throughput_r, q.throughput_g, q.throughput_b, i);
+
+        for (uint32_t j = 0; j < settings.count; ++j) {
+            const std::size_t k = j * q.stride + i;
+            const Lanes3<N> light = load3<N>(q.light_px, q.light_py, q.light_pz, k);
+            const Lanes3<N> light_normal = load3<N>(q.light_nx, q.light_ny, q.light_nz, k);
+            const vfloat<N> pdf_area = vfloat<N>::load(q.light_pdf_area.data() + k);
+            const Lanes3<N> to_light{light.x - position.x, light.y - position.y, light.z - position.z};
+            const vfloat<N> dist2 = dot(to_light, to_light);
+            const vfloat<N> dist = simd::sqrt(dist2);
+            const Lanes3<N> wi{to_light.x / dist, to_light.y / dist, to_light.z / dist};
+            const vfloat<N> cos_x = dot(n, wi);
+            const vfloat<N> cos_y = -dot(light_normal, wi);
+            // Light seen from behind, or a point below the surface: no ray.
+            const vbool<N> contributes = sampled & (dist2 > 0.0f) & ~((cos_x <= 0.0f) | (cos_y <= 0.0f));
+
+            // DiffuseBsdfAtView: zero with the view below the surface, else Lambert or Oren-Nayar.
+            const vfloat<N> oren_nayar = kInvPi * oren_nayar_factor<N>(oren_nayar_a, oren_nayar_b, cos_x, cos_o, dot(wi, wo));
+            const vbool<N> black = (cos_x <= 0.0f) | (cos_o <= 0.0f);
+            const auto f = [&](vfloat<N> a, vfloat<N> l) {
+                return simd::select(black, vfloat<N>(0.0f), simd::select(rough, a * oren_nayar, l));
+            };
+            const vfloat<N> geometry = cos_x * cos_y / (dist2 * pdf_area * count);
+            // aim_shadow_ray: to the light point moved off its own surface.
+            const Lanes3<N> target = offset_ray_origin<N>(light, load3<N>(q.light_ex, q.light_ey, q.light_ez, k), light_normal);
+            const Lanes3<N> span{target.x - origin.x, target.y - origin.y, target.z - origin.z};
+            const vfloat<N> tmax = simd::sqrt(dot(span, span));
+            vfloat<N> weight(1.0f);
+            if (settings.mis) {  // power_heuristic(count * light pdf per solid angle, cos_x / pi)
+                const vfloat<N> light_pdf = pdf_area * dist2 / cos_y;
+                const vfloat<N> mine = count * light_pdf;
+                const vfloat<N> a = mine * mine;
+                const vfloat<N> bsdf_pdf = cos_x * kInvPi;
+                weight = a / (a + bsdf_pdf * bsdf_pdf);
+            }
+            // throughput * f * radiance * geometry, then the weight, then the clamp (clamped_per_channel).
+            const auto contribution = [&](vfloat<N> t, vfloat<N> a, vfloat<N> l, const AlignedVector<float>& radiance) {
+                vfloat<N> c = t * f(a, l) * vfloat<N>::load(radiance.data() + k) * geometry;
+                if (settings.mis) c = c * weight;
+                return simd::select(c > settings.clamp_limit, vfloat<N>(settings.clamp_limit), c);
+            };
+            const vfloat<N> lanes[7] = {span.x / tmax,
+                                        span.y / tmax,
+                                        span.z / tmax,
+                                        tmax,
+                                        contribution(throughput.x, albedo.x, lambert.x, q.light_r),
+                                        contribution(throughput.y, albedo.y, lambert.y, q.light_g),
+                                        contribution(throughput.z, albedo.z, lambert.z, q.light_b)};
+            for (int c = 0; c < 7; ++c) vfloat<N>::store(out[c], lanes[c]);
+            for (uint32_t pushed = lanes_below(contributes, q.count - i); pushed != 0; pushed &= pushed - 1) {
+                const int lane = __builtin_ctz(pushed);
+                const std::size_t at = shadows.count++;
+                shadows.ox[at] = origins[0][lane], shadows.oy[at] = origins[1][lane], shadows.oz[at] = origins[2][lane];
+                shadows.dx[at] = out[0][lane], shadows.dy[at] = out[1][lane], shadows.dz[at] = out[2][lane];
+                shadows.tmax[at] = out[3][lane];
+                shadows.contribution_r[at] = out[4][lane], shadows.contribution_g[at] = out[5][lane],
+                shadows.contribution_b[at] = out[6][lane];
+                shadows.path[at] = q.path[i + lane];
+            }
+        }
+    }
+}
+
+}  // namespace WT_SIMD_ISA
+}  // namespace wt::shading
