@@ -214,9 +214,12 @@ WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_
         bvh.nodes, bvh.root, box_ray, state,
         [&](uint32_t ref) __attribute__((always_inline)) { test_leaf<T, S, L>(bvh, ref, ray, tri_ray, state); },
         [&](uint32_t ref) __attribute__((always_inline)) {  // the whole block: the leaf test reads every row
+            // Line by line from the line holding its first byte: a block need not start on a line.
             const uint32_t count = ((ref >> kBvhCountShift) & 7u) + 1u;
-            const char* block = reinterpret_cast<const char*>(bvh.leaves + std::size_t(ref & kBvhFirstMask) * rows);
-            for (uint32_t byte = 0; byte < count * rows * uint32_t(sizeof(float)); byte += 64) __builtin_prefetch(block + byte);
+            const uintptr_t block = reinterpret_cast<uintptr_t>(bvh.leaves + std::size_t(ref & kBvhFirstMask) * rows);
+            const uintptr_t end = block + count * rows * uint32_t(sizeof(float));
+            for (uintptr_t line = block & ~uintptr_t(63); line < end; line += 64)
+                __builtin_prefetch(reinterpret_cast<const void*>(line));
         });
     if constexpr (Q == Query::any)
         if (!state.done()) test_beside();
@@ -258,8 +261,10 @@ WT_KERNEL_INLINE void with_node_width(const BvhView& bvh, F&& f) {
 template <Query Q, TriangleTest T, SphereTest S, int MaxWidth>
 void bvh_query(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
     with_node_width(bvh, [&](auto width) {
-        if (Q == Query::any && bvh.prefetch_pushed) trace_bvh_rays<Q, T, S, width.value, MaxWidth, true>(bvh, rays, out);
-        else trace_bvh_rays<Q, T, S, width.value, MaxWidth, false>(bvh, rays, out);
+        if constexpr (Q == Query::any) {  // closest-hit walks never prefetch: no instantiation for them
+            if (bvh.prefetch_pushed) return trace_bvh_rays<Q, T, S, width.value, MaxWidth, true>(bvh, rays, out);
+        }
+        trace_bvh_rays<Q, T, S, width.value, MaxWidth, false>(bvh, rays, out);
     });
 }
 
