@@ -114,7 +114,7 @@ check_ratio intersect/scalar/raypacket/closest intersect/sse4/raypacket/closest 
 check_ratio render/scalar render/avx2 1.3
 check_ratio intersect/scalar/bvh/closest intersect/avx2/bvh/closest 2
 check_ratio shade/scalar shade/avx2 4
-check_ratio shade/scalar shade/sse4 2.2
+check_ratio shade/scalar shade/sse4 1.8  # SSE4 has no gather: the surface kernel loads lane by lane
 
 if [ "$failures" -gt 0 ]; then
   echo "perf_gate: $failures check(s) failed. If the change is intended, run bench/perf_gate.sh build --update and commit the baseline."

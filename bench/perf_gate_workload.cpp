@@ -10,11 +10,13 @@
 //   perf_gate_workload SCENE build                  building that BVH on one thread
 //   perf_gate_workload SCENE render ISA [AOVS]      a 24x24, 2 spp hexroom render on one thread; with
 //                                                   AOVS (an --aov list: "all"), rendering those too
-//   perf_gate_workload SCENE shade ISA              the shade kernels (kernels/shading) on the flat
-//                                                   diffuse vertices the incoherent rays hit: one
-//                                                   light sample each, then the continuation past
-//                                                   the roulette's start
+//   perf_gate_workload SCENE shade ISA              the shade kernels (kernels/shading) on what the
+//                                                   incoherent rays hit: the surface points, then
+//                                                   on the flat diffuse vertices one light sample
+//                                                   each and the continuation past the roulette's
+//                                                   start
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <limits>
@@ -32,6 +34,7 @@
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/queues/ray_queues.h"
+#include "kernels/queues/surface_chunk.h"
 #include "displaced_sphere.h"
 #include "kernels/accel/bvh.h"
 #include "kernels/renderer.h"
@@ -158,17 +161,33 @@ int main(int argc, char** argv) {
                        draws.choice_and_roulette.second, uint32_t(i), false, samples_lights);
             if (samples_lights) queue.set_light_sample(queue.count - 1, 0, light_sample_point<DefaultEstimator>(scene, random, 0));
         }
-        RayQueue next;
+        RayQueue next, queued_rays;
         next.reserve(queue.count);
+        queued_rays.reserve(n);
+        HitQueue queued_hits;
+        queued_hits.reserve(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            queued_rays.push({{rays.ox[i], rays.oy[i], rays.oz[i]}, {rays.dx[i], rays.dy[i], rays.dz[i]}}, glm::vec3(1.0f), 0, 0);
+            queued_hits.set(i, {t[i], prim[i], u[i], v[i]});
+        }
         ShadowQueue shadows;
         shadows.reserve(queue.count);
+        SurfaceChunk surfaces;
+        Checksum sum;
         const ShadeKernels& k = shade_kernels(*isa);
         CALLGRIND_TOGGLE_COLLECT;
+        for (std::size_t first = 0; first < n; first += SurfaceChunk::kSize) {
+            const std::size_t count = std::min(SurfaceChunk::kSize, n - first);
+            k.surface_points(scene, queued_rays, queued_hits, first, count, surfaces);
+            CALLGRIND_TOGGLE_COLLECT;
+            for (std::size_t i = 0; i < count; ++i)
+                if (prim[first + i] != kNoHit) sum.add(surfaces.px[i]), sum.add(surfaces.ny[i]), sum.add(surfaces.material[i]);
+            CALLGRIND_TOGGLE_COLLECT;
+        }
         k.sample_diffuse_lights(queue, {1, false, std::numeric_limits<float>::infinity()}, shadows);
         k.continue_diffuse(queue, {true, false, false}, next);
         CALLGRIND_TOGGLE_COLLECT;
         std::printf("vertices %zu, shadow rays %zu, continued %zu\n", queue.count, shadows.count, next.count);
-        Checksum sum;
         for (std::size_t i = 0; i < next.count; ++i) {
             sum.add(next.path[i]), sum.add(next.ox[i]), sum.add(next.oy[i]), sum.add(next.oz[i]);
             sum.add(next.dx[i]), sum.add(next.dy[i]), sum.add(next.dz[i]);

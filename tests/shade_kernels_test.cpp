@@ -1,7 +1,8 @@
 // The SIMD shade kernels against the scalar vertex code they replace, bit for bit, on every ISA
 // this CPU runs, on random flat diffuse vertices about the hexroom's light and on the extremes
 // (poles of the frame, grazing directions, the disk's centre and diagonals, black and
-// near-black paths, huge and tiny scales, zero coordinates): the diffuse continuation kernel
+// near-black paths, huge and tiny scales, zero coordinates): the surface kernel
+// (kernels/shading/surface_points.h) against surface_at, the diffuse continuation kernel
 // (kernels/shading/diffuse_continuation.h) against continue_path, the light sample kernel
 // (kernels/shading/diffuse_light_samples.h) against DirectLightSampler (core/path/path_vertex.h).
 
@@ -23,6 +24,7 @@
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/queues/diffuse_vertex_queue.h"
 #include "kernels/queues/ray_queues.h"
+#include "kernels/queues/surface_chunk.h"
 #include "test_scenes.h"
 
 namespace wt {
@@ -296,6 +298,64 @@ TEST(ShadeKernels, DiffuseLightSamplesEqualDirectLightSamplerBitForBit) {
         expect_light_kernel_equals_direct_light_sampler<Estimator<SobolSampler, LightSampling::mis, true>>(kernels, 1, 2, 14);
         expect_light_kernel_equals_direct_light_sampler<Estimator<StratifiedSampler, LightSampling::nee, true>>(kernels, 3, 1, 15);
     }
+}
+
+// Hits on every triangle and sphere of the hexroom, on random triangles and on a sliver, at random
+// barycentrics and distances, with misses among them, in chunks of every length.
+TEST(ShadeKernels, SurfacePointsEqualSurfaceAtBitForBit) {
+    Scene scene = build_scene(test::hexroom(8, 8, 1));
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    // The room's walls are vertical: triangles at every orientation and scale too.
+    for (int k = 0; k < 64; ++k) {
+        const float scale = std::pow(10.0f, float(k % 7 - 3));
+        const auto corner = [&] { return scale * (glm::vec3(unit(rng), unit(rng), unit(rng)) - 0.5f); };
+        scene.triangles.push_back(corner(), corner(), corner(), 0);
+    }
+    const glm::vec3 corner(1.0f, 2.0f, 3.0f);
+    scene.triangles.push_back(corner, corner + glm::vec3(1e-30f, 0.0f, 0.0f), corner + glm::vec3(2e-30f, 0.0f, 0.0f), 0);
+    ASSERT_TRUE(has_flat_surfaces_only(scene));
+    const uint32_t primitives = uint32_t(scene.triangles.size() + scene.spheres.size());
+    const std::size_t n = 3 * SurfaceChunk::kSize + 7;
+    RayQueue rays;
+    rays.reserve(n);
+    HitQueue hits;
+    hits.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec3 origin = 8.0f * glm::vec3(unit(rng), unit(rng), unit(rng)) - 4.0f;
+        rays.push({origin, glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) - 0.5f)}, glm::vec3(1.0f), 0, 0);
+        const float u = unit(rng), v = (1.0f - u) * unit(rng);
+        const uint32_t prim = i >= primitives && i % 9 == 4 ? kNoHit : i < primitives ? uint32_t(i) : uint32_t(rng() % primitives);
+        hits.set(i, {10.0f * unit(rng), prim, u, v});
+    }
+    std::size_t spheres = 0, triangles = 0;
+    for (TriangleTest test : {TriangleTest::moller_trumbore, TriangleTest::watertight}) {
+        scene.settings.accuracy.triangles = test;
+        for (Isa isa : supported_isas()) {
+            SurfaceChunk chunk;
+            for (std::size_t first = 0; first < n; first += SurfaceChunk::kSize) {
+                const std::size_t count = std::min(SurfaceChunk::kSize, n - first);
+                shade_kernels(isa).surface_points(scene, rays, hits, first, count, chunk);
+                for (std::size_t k = 0; k < count; ++k) {
+                    const Hit hit = hits.hit(first + k);
+                    if (!hit.found()) continue;
+                    const SurfacePoint expected = surface_at(scene, rays.ray(first + k), hit), actual = chunk.at(k);
+                    (hit.prim < scene.triangles.size() ? triangles : spheres) += 1;
+                    const std::string where = std::string(isa_name(isa)) + ", " + name_of(test) + ", primitive " +
+                                              std::to_string(hit.prim) + " (reproduce: kernels_test --gtest_filter='ShadeKernels.Surface*')";
+                    ASSERT_EQ(std::memcmp(&expected.position, &actual.position, sizeof(glm::vec3)), 0) << where;
+                    ASSERT_EQ(std::memcmp(&expected.error, &actual.error, sizeof(glm::vec3)), 0) << where;
+                    ASSERT_EQ(std::memcmp(&expected.normal, &actual.normal, sizeof(glm::vec3)), 0) << where;
+                    ASSERT_EQ(expected.material, actual.material) << where;
+                    ASSERT_FALSE(expected.smooth) << where;
+                }
+            }
+        }
+    }
+    EXPECT_GT(triangles, 0u);
+    EXPECT_GT(spheres, 0u);
+    // The sliver's normal is 0, as TriangleSoA::normal gives it.
+    EXPECT_EQ(scene.triangles.normal(scene.triangles.size() - 1), glm::vec3(0.0f));
 }
 
 // Vertices past the queue's count are never pushed, whatever the padding lanes hold.

@@ -2,10 +2,11 @@
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/shading/diffuse_continuation.h"
 #include "kernels/shading/diffuse_light_samples.h"
+#include "kernels/shading/surface_points.h"
 
 namespace wt {
 
-const ShadeKernels kShadeAvx2 = {Isa::avx2, 8, &shading::continue_diffuse_vertices<8>,
+const ShadeKernels kShadeAvx2 = {Isa::avx2, 8, &shading::surface_points<8>, &shading::continue_diffuse_vertices<8>,
                                    &shading::sample_diffuse_lights<8>};
 
 }  // namespace wt

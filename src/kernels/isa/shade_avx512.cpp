@@ -2,10 +2,11 @@
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/shading/diffuse_continuation.h"
 #include "kernels/shading/diffuse_light_samples.h"
+#include "kernels/shading/surface_points.h"
 
 namespace wt {
 
-const ShadeKernels kShadeAvx512 = {Isa::avx512, 16, &shading::continue_diffuse_vertices<16>,
+const ShadeKernels kShadeAvx512 = {Isa::avx512, 16, &shading::surface_points<16>, &shading::continue_diffuse_vertices<16>,
                                    &shading::sample_diffuse_lights<16>};
 
 }  // namespace wt

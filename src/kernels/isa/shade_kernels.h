@@ -3,11 +3,16 @@
 // time with the intersection kernels' ISA. Only plain declarations here: this header is included
 // by the per-ISA translation units.
 
+#include <cstddef>
+
 #include "kernels/isa/intersect_kernels.h"
 
 namespace wt {
 
 struct DiffuseContinuation;
+struct HitQueue;
+struct Scene;
+struct SurfaceChunk;
 struct DiffuseLightSampling;
 struct DiffuseVertexQueue;
 struct RayQueue;
@@ -16,6 +21,10 @@ struct ShadowQueue;
 struct ShadeKernels {
     Isa isa;
     int width;
+    // surface_at for hits [first, first + count) of the queue (count at most SurfaceChunk::kSize),
+    // into the chunk from its start, in a scene with flat surfaces only (has_flat_surfaces_only,
+    // kernels/shading/surface_points.h).
+    void (*surface_points)(const Scene&, const RayQueue&, const HitQueue&, std::size_t first, std::size_t count, SurfaceChunk&);
     // continue_path for every vertex of the queue, in its order; the paths that go on are appended
     // to `next` (kernels/shading/diffuse_continuation.h).
     void (*continue_diffuse)(const DiffuseVertexQueue&, const DiffuseContinuation&, RayQueue& next);

@@ -2,10 +2,11 @@
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/shading/diffuse_continuation.h"
 #include "kernels/shading/diffuse_light_samples.h"
+#include "kernels/shading/surface_points.h"
 
 namespace wt {
 
-const ShadeKernels kShadeScalar = {Isa::scalar, 1, &shading::continue_diffuse_vertices<1>,
+const ShadeKernels kShadeScalar = {Isa::scalar, 1, &shading::surface_points<1>, &shading::continue_diffuse_vertices<1>,
                                    &shading::sample_diffuse_lights<1>};
 
 }  // namespace wt

@@ -2,10 +2,11 @@
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/shading/diffuse_continuation.h"
 #include "kernels/shading/diffuse_light_samples.h"
+#include "kernels/shading/surface_points.h"
 
 namespace wt {
 
-const ShadeKernels kShadeSse4 = {Isa::sse4, 4, &shading::continue_diffuse_vertices<4>,
+const ShadeKernels kShadeSse4 = {Isa::sse4, 4, &shading::surface_points<4>, &shading::continue_diffuse_vertices<4>,
                                    &shading::sample_diffuse_lights<4>};
 
 }  // namespace wt

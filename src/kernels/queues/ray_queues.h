@@ -13,6 +13,7 @@
 #include "core/path/path_vertex.h"
 #include "core/base/ray.h"
 #include "kernels/queues/diffuse_vertex_queue.h"
+#include "kernels/queues/surface_chunk.h"
 
 namespace wt {
 
@@ -124,22 +125,29 @@ struct ShadowQueue {
     glm::vec3 contribution(std::size_t i) const { return {contribution_r[i], contribution_g[i], contribution_b[i]}; }
 };
 
+// What the shade stage's kernels (kernels/shading) read and write besides the queues: a chunk
+// of surface points and a chunk of flat diffuse vertices (kernels/wavefront/shade_queue.h).
+struct ShadeChunks {
+    SurfaceChunk surfaces;
+    DiffuseVertexQueue diffuse;
+};
+
 // Everything one worker needs to run a batch; allocated once per worker.
 struct WavefrontWorkspace {
     PathTable paths;
     RayQueue rays, next_rays;
     HitQueue hits;
     ShadowQueue shadows;
-    DiffuseVertexQueue diffuse;  // a chunk of the shade stage's flat diffuse vertices (kernels/wavefront/shade_queue.h)
+    ShadeChunks shade;
 
     // What the constructor allocates, per path: the path table (2 x 4 + 8 + 4 x 4 bytes, the
     // first surface with AOVs, 3 x 4 with the normals), two ray queues (10 x 4 + 4 + 1), the
-    // hits (3 x 4 + 4); per shadow ray (10 x 4 + 4 + 1); and one chunk of diffuse vertices.
+    // hits (3 x 4 + 4); per shadow ray (10 x 4 + 4 + 1); and the shade stage's chunks.
     static constexpr std::size_t bytes_needed(std::size_t batch_paths, std::size_t shadow_rays_per_hit, bool with_aovs,
                                               bool with_normals = false) {
         const std::size_t path_table = 32 + (with_aovs ? sizeof(FirstSurface) : 0) + (with_normals ? 12 : 0);
         return batch_paths * (path_table + 2 * 45 + 16) + batch_paths * shadow_rays_per_hit * 45 +
-               DiffuseVertexQueue::bytes_needed(shadow_rays_per_hit);
+               DiffuseVertexQueue::bytes_needed(shadow_rays_per_hit) + SurfaceChunk::kBytes;
     }
 
     // `with_normals`: the scene has an emitter selection (PathTable::nx).
@@ -149,7 +157,7 @@ struct WavefrontWorkspace {
         next_rays.reserve(batch_paths);
         hits.reserve(batch_paths);
         shadows.reserve(batch_paths * shadow_rays_per_hit);
-        diffuse.reserve(DiffuseVertexQueue::chunk_for(shadow_rays_per_hit), shadow_rays_per_hit);
+        shade.diffuse.reserve(DiffuseVertexQueue::chunk_for(shadow_rays_per_hit), shadow_rays_per_hit);
     }
 };
 

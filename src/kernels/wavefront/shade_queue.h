@@ -5,6 +5,8 @@
 // default with them) and stage_shade_options_aovs.cpp (the others with them): a render without
 // AOVs runs the loop it ran before they existed, compiled as it was.
 
+#include <algorithm>
+
 #include "core/path/first_surface.h"
 #include "core/path/glossy_light_sampler.h"
 #include "core/path/listed_light_sampler.h"
@@ -12,6 +14,7 @@
 #include "core/path/path_vertex.h"
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/queues/diffuse_vertex_queue.h"
+#include "kernels/queues/ray_queues.h"
 #include "kernels/photons/photon_gather.h"
 #include "kernels/photons/photon_maps.h"
 #include "kernels/wavefront/stages.h"
@@ -28,8 +31,9 @@ namespace wt {
 // what escaping rays see, in place of the area lights' alone (stage_shade_listed_lights.cpp,
 // always with kRough: a scene with a lights list is rare enough to test its materials at run
 // time, and a fourth set of instantiations would cost every build for nothing).
-// The flat diffuse vertices' light samples and continuations are left to the ISA's shade kernels
-// (kernels/shading): the loop draws their random numbers, picks their light points and queues
+// In scenes of flat triangles and spheres alone, the surface points are the ISA's surface kernel's,
+// a chunk at a time. The flat diffuse vertices' light samples and continuations are left to the
+// ISA's shade kernels (kernels/shading): the loop draws their random numbers, picks their light points and queues
 // them in `diffuse`, and the kernels append their shadow rays and next rays, a chunk at a time,
 // among the other vertices'. Every path's terms are still added in the same order (its emission and photons
 // here, its light samples in index order by the shadow stage), and each path's random numbers
@@ -37,11 +41,14 @@ namespace wt {
 // lights list, whose samplers and continuations are other code.
 template <typename E, bool kRecordAovs, bool kRough, bool kListedLights = false>
 void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounce, const RayQueue& rays, const HitQueue& hits,
-                 PathTable& paths, DiffuseVertexQueue& diffuse, RayQueue& next_rays, ShadowQueue& shadows,
+                 PathTable& paths, ShadeChunks& chunks, RayQueue& next_rays, ShadowQueue& shadows,
                  const PhotonMaps* photons) {
     const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
     const bool has_lights = !scene.lights.empty();
     const bool path_continues = int(bounce) + 1 < scene.settings.max_bounces;
+    const bool flat_surfaces = has_flat_surfaces_only(scene);
+    SurfaceChunk& surfaces = chunks.surfaces;
+    DiffuseVertexQueue& diffuse = chunks.diffuse;
     next_rays.count = 0;
     shadows.count = 0;
     diffuse.count = 0;
@@ -60,6 +67,9 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
     };
     [[maybe_unused]] std::optional<Material> textured;  // kRough: the hit's material with its textures looked up
     for (std::size_t i = 0; i < rays.count; ++i) {
+        const std::size_t in_chunk = i % SurfaceChunk::kSize;
+        if (flat_surfaces && in_chunk == 0)
+            kernels.surface_points(scene, rays, hits, i, std::min(SurfaceChunk::kSize, rays.count - i), surfaces);
         const Hit hit = hits.hit(i);
         if constexpr (!kListedLights) {
             if (!hit.found()) continue;  // no environment light: the path ends with what it has
@@ -76,7 +86,8 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
         const uint32_t slot = rays.path[i];
         const PathSeed path{paths.key[slot], paths.sample[slot]};
         const glm::vec3 throughput = rays.throughput(i);
-        SurfacePoint surface = surface_at(scene, ray, hit);  // a normal map may change its shading normal
+        // (Not const: a normal map may change its shading normal.)
+        SurfacePoint surface = flat_surfaces ? surfaces.at(in_chunk) : surface_at(scene, ray, hit);
         // Textured scenes run the kRough loop (stage_shade.cpp): without it, the loop is as it was.
         const Material& m = kRough ? material_at(scene, hit, surface, ray, bounce == 0, textured)
                                    : scene.materials[surface.material];
@@ -143,11 +154,11 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
 // (Two macros, not one calling the other: E's commas would split it into more arguments.)
 #define WT_SHADE_QUEUE_SIGNATURE(E, record_aovs, rough)                                                                   \
     void shade_queue<E, record_aovs, rough, false>(const Scene&, const ShadeKernels&, uint32_t, const RayQueue&,           \
-                                                   const HitQueue&, PathTable&, DiffuseVertexQueue&, RayQueue&,           \
+                                                   const HitQueue&, PathTable&, ShadeChunks&, RayQueue&,           \
                                                    ShadowQueue&, const PhotonMaps*)
 #define WT_SHADE_QUEUE_SIGNATURE_LIGHTS(E, record_aovs)                                                                   \
     void shade_queue<E, record_aovs, true, true>(const Scene&, const ShadeKernels&, uint32_t, const RayQueue&,             \
-                                                 const HitQueue&, PathTable&, DiffuseVertexQueue&, RayQueue&,             \
+                                                 const HitQueue&, PathTable&, ShadeChunks&, RayQueue&,             \
                                                  ShadowQueue&, const PhotonMaps*)
 
 }  // namespace wt

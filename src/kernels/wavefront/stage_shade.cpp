@@ -20,25 +20,25 @@ extern template WT_SHADE_QUEUE_SIGNATURE_LIGHTS(DefaultEstimator, true);
 // rough materials at run time), with rough materials or textures, or neither; with or without
 // the AOVs.
 void shade_stage(const Scene& scene, const ShadeKernels& kernels, uint32_t bounce, const RayQueue& rays, const HitQueue& hits,
-                 PathTable& paths, DiffuseVertexQueue& diffuse, RayQueue& next_rays, ShadowQueue& shadows,
+                 PathTable& paths, ShadeChunks& chunks, RayQueue& next_rays, ShadowQueue& shadows,
                  const PhotonMaps* photons) {
     const bool record_aovs = !paths.first_surface.empty();
     with_estimator(scene.settings.estimator, [&](auto estimator) {
         using E = decltype(estimator);
         if (!scene.listed_lights.empty()) {
             if (record_aovs)
-                shade_queue<E, true, true, true>(scene, kernels, bounce, rays, hits, paths, diffuse, next_rays, shadows, photons);
+                shade_queue<E, true, true, true>(scene, kernels, bounce, rays, hits, paths, chunks, next_rays, shadows, photons);
             else
-                shade_queue<E, false, true, true>(scene, kernels, bounce, rays, hits, paths, diffuse, next_rays, shadows, photons);
+                shade_queue<E, false, true, true>(scene, kernels, bounce, rays, hits, paths, chunks, next_rays, shadows, photons);
         } else if (scene.has_rough_materials || scene.has_textures()) {
             if (record_aovs)
-                shade_queue<E, true, true>(scene, kernels, bounce, rays, hits, paths, diffuse, next_rays, shadows, photons);
+                shade_queue<E, true, true>(scene, kernels, bounce, rays, hits, paths, chunks, next_rays, shadows, photons);
             else
-                shade_queue<E, false, true>(scene, kernels, bounce, rays, hits, paths, diffuse, next_rays, shadows, photons);
+                shade_queue<E, false, true>(scene, kernels, bounce, rays, hits, paths, chunks, next_rays, shadows, photons);
         } else if (record_aovs) {
-            shade_queue<E, true, false>(scene, kernels, bounce, rays, hits, paths, diffuse, next_rays, shadows, photons);
+            shade_queue<E, true, false>(scene, kernels, bounce, rays, hits, paths, chunks, next_rays, shadows, photons);
         } else {
-            shade_queue<E, false, false>(scene, kernels, bounce, rays, hits, paths, diffuse, next_rays, shadows, photons);
+            shade_queue<E, false, false>(scene, kernels, bounce, rays, hits, paths, chunks, next_rays, shadows, photons);
         }
     });
 }

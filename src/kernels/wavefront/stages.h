@@ -41,9 +41,10 @@ void intersect_closest_stage(const IntersectContext& context, const RayQueue& ra
 // AOVs (a non-empty `paths.first_surface`), each path's first surface (core/path/first_surface.h);
 // with `photons` (the batch's maps, when the scene merges photons), their estimate where a path
 // gathers it (gathers_photons).
-// `kernels` continue the flat diffuse vertices, queued in `diffuse` (shade_queue.h).
+// `kernels` compute the surface points and shade the flat diffuse vertices, a chunk at a time in
+// `chunks` (shade_queue.h).
 void shade_stage(const Scene& scene, const ShadeKernels& kernels, uint32_t bounce, const RayQueue& rays, const HitQueue& hits,
-                 PathTable& paths, DiffuseVertexQueue& diffuse, RayQueue& next_rays, ShadowQueue& shadows,
+                 PathTable& paths, ShadeChunks& chunks, RayQueue& next_rays, ShadowQueue& shadows,
                  const PhotonMaps* photons);
 
 // Any-hit test of every shadow ray; unblocked ones add their contribution to their path.

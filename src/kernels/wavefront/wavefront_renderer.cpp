@@ -24,7 +24,7 @@ void render_batches(const Scene& scene, const IntersectContext& context, uint32_
 
         for (uint32_t bounce = 0; ws.rays.count > 0; ++bounce) {
             intersect_closest_stage(context, ws.rays, ws.hits, bounce == 0);
-            shade_stage(scene, shade_kernels_of_isa, bounce, ws.rays, ws.hits, ws.paths, ws.diffuse, ws.next_rays, ws.shadows,
+            shade_stage(scene, shade_kernels_of_isa, bounce, ws.rays, ws.hits, ws.paths, ws.shade, ws.next_rays, ws.shadows,
                         photons);
             shadow_stage(context, ws.shadows, ws.paths);
             counts.shadow_rays += ws.shadows.count;

@@ -1,0 +1,104 @@
+#pragma once
+// surface_at (core/scene/scene.h) for a chunk of hits, N at a time: on flat triangles, the point
+// from the barycentrics, its error bound (with the watertight test's floor where the scene uses
+// it) and the unit normal of the edges' cross product; on spheres, the point projected back onto
+// the sphere, its bound and the outward normal. Bit for bit the scalar code, in the way of
+// diffuse_continuation.h (tests/shade_kernels_test.cpp). Only for scenes without vertex normals
+// and instances (has_flat_surfaces_only); lanes whose ray missed are left unspecified.
+
+#include <cstdint>
+
+#include "core/base/ray_offset.h"
+#include "core/scene/scene.h"
+#include "kernels/queues/ray_queues.h"
+#include "kernels/queues/surface_chunk.h"
+#include "kernels/shading/lanes.h"
+
+namespace wt::shading {
+inline namespace WT_SIMD_ISA {
+
+template <int N>
+inline Lanes3<N> gather3(vbool<N> m, const AlignedVector<float>& x, const AlignedVector<float>& y, const AlignedVector<float>& z,
+                         vint<N> index) {
+    return {vfloat<N>::gather(m, x.data(), index), vfloat<N>::gather(m, y.data(), index), vfloat<N>::gather(m, z.data(), index)};
+}
+
+template <int N>
+inline Lanes3<N> magnitude(const Lanes3<N>& v) {
+    return {simd::abs(v.x), simd::abs(v.y), simd::abs(v.z)};
+}
+
+// Hits [first, first + count) of the queue, count at most SurfaceChunk::kSize, into `out` from 0.
+template <int N>
+void surface_points(const Scene& scene, const RayQueue& rays, const HitQueue& hits, std::size_t first, std::size_t count,
+                    SurfaceChunk& out) {
+    const TriangleSoA& t = scene.triangles;
+    const SphereSoA& s = scene.spheres;
+    const vint<N> triangle_count(int32_t(t.size()));
+    const bool watertight = scene.settings.accuracy.triangles == TriangleTest::watertight;
+    for (std::size_t k = 0; k < count; k += N) {
+        const std::size_t i = first + k;
+        const int lanes = count - k < std::size_t(N) ? int(count - k) : N;
+        const auto load = [&](const AlignedVector<float>& a) { return vfloat<N>::load_partial(a.data() + i, lanes, 0.0f); };
+        const vint<N> prim = vint<N>::load_partial(reinterpret_cast<const int32_t*>(hits.prim.data() + i), lanes,
+                                                   vint<N>(int32_t(kNoHit)));
+        const vbool<N> found = prim != vint<N>(int32_t(kNoHit));
+        const vbool<N> triangle = found & (prim < triangle_count);  // found ids are below 2^31
+        const vbool<N> sphere = found & ~triangle;
+
+        // Triangles: v0 + u e1 + v e2, triangle_point_error, TriangleSoA::normal.
+        const Lanes3<N> v0 = gather3<N>(triangle, t.v0x, t.v0y, t.v0z, prim);
+        const Lanes3<N> e1 = gather3<N>(triangle, t.e1x, t.e1y, t.e1z, prim);
+        const Lanes3<N> e2 = gather3<N>(triangle, t.e2x, t.e2y, t.e2z, prim);
+        const vfloat<N> u = load(hits.u), v = load(hits.v);
+        const Lanes3<N> ue1{u * e1.x, u * e1.y, u * e1.z}, ve2{v * e2.x, v * e2.y, v * e2.z};
+        const Lanes3<N> triangle_position{v0.x + ue1.x + ve2.x, v0.y + ue1.y + ve2.y, v0.z + ue1.z + ve2.z};
+        const Lanes3<N> a = magnitude(v0), b = magnitude(ue1), c = magnitude(ve2);
+        constexpr float gamma7 = rounding_gamma(7);
+        Lanes3<N> triangle_error{gamma7 * (a.x + b.x + c.x), gamma7 * (a.y + b.y + c.y), gamma7 * (a.z + b.z + c.z)};
+        if (watertight) {  // with_watertight_floor
+            const vfloat<N> larger_xy = simd::select(triangle_error.x > triangle_error.y, triangle_error.x, triangle_error.y);
+            const vfloat<N> floor = 0.25f * simd::select(larger_xy > triangle_error.z, larger_xy, triangle_error.z);
+            triangle_error = {simd::select(triangle_error.x > floor, triangle_error.x, floor),
+                              simd::select(triangle_error.y > floor, triangle_error.y, floor),
+                              simd::select(triangle_error.z > floor, triangle_error.z, floor)};
+        }
+        const Lanes3<N> cross{e1.y * e2.z - e2.y * e1.z, e1.z * e2.x - e2.z * e1.x, e1.x * e2.y - e2.x * e1.y};
+        const vfloat<N> length = simd::sqrt(dot(cross, cross));
+        const vbool<N> degenerate = ~(length > 0.0f);  // a sliver: normal 0
+        const Lanes3<N> triangle_normal{simd::select(degenerate, vfloat<N>(0.0f), cross.x / length),
+                                        simd::select(degenerate, vfloat<N>(0.0f), cross.y / length),
+                                        simd::select(degenerate, vfloat<N>(0.0f), cross.z / length)};
+
+        // Spheres: the outward normal at o + t d, the point c + r n, sphere_point_error.
+        const vint<N> sphere_index = prim - triangle_count;
+        const Lanes3<N> centre = gather3<N>(sphere, s.cx, s.cy, s.cz, sphere_index);
+        const vfloat<N> radius = vfloat<N>::gather(sphere, s.radius.data(), sphere_index);
+        const vfloat<N> distance = load(hits.t);
+        const Lanes3<N> w{load(rays.ox) + distance * load(rays.dx) - centre.x, load(rays.oy) + distance * load(rays.dy) - centre.y,
+                          load(rays.oz) + distance * load(rays.dz) - centre.z};
+        const vfloat<N> inverse_length = 1.0f / simd::sqrt(dot(w, w));
+        const Lanes3<N> sphere_normal{w.x * inverse_length, w.y * inverse_length, w.z * inverse_length};
+        const Lanes3<N> radial{radius * sphere_normal.x, radius * sphere_normal.y, radius * sphere_normal.z};
+        const Lanes3<N> sphere_position{centre.x + radial.x, centre.y + radial.y, centre.z + radial.z};
+        const Lanes3<N> cm = magnitude(centre), rm = magnitude(radial);
+        constexpr float gamma5 = rounding_gamma(5);
+        const Lanes3<N> sphere_error{gamma5 * (cm.x + rm.x), gamma5 * (cm.y + rm.y), gamma5 * (cm.z + rm.z)};
+
+        const auto store3 = [&](AlignedVector<float>& x, AlignedVector<float>& y, AlignedVector<float>& z, const Lanes3<N>& on_triangle,
+                                const Lanes3<N>& on_sphere) {
+            const Lanes3<N> chosen = select(triangle, on_triangle, on_sphere);
+            vfloat<N>::store(x.data() + k, chosen.x), vfloat<N>::store(y.data() + k, chosen.y), vfloat<N>::store(z.data() + k, chosen.z);
+        };
+        store3(out.px, out.py, out.pz, triangle_position, sphere_position);
+        store3(out.ex, out.ey, out.ez, triangle_error, sphere_error);
+        store3(out.nx, out.ny, out.nz, triangle_normal, sphere_normal);
+        const vint<N> material =
+            simd::select(triangle, vint<N>::gather(triangle, reinterpret_cast<const int32_t*>(t.material.data()), prim),
+                         vint<N>::gather(sphere, reinterpret_cast<const int32_t*>(s.material.data()), sphere_index));
+        vint<N>::store(reinterpret_cast<int32_t*>(out.material.data() + k), material);
+    }
+}
+
+}  // namespace WT_SIMD_ISA
+}  // namespace wt::shading
