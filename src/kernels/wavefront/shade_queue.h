@@ -31,14 +31,15 @@ namespace wt {
 // what escaping rays see, in place of the area lights' alone (stage_shade_listed_lights.cpp,
 // always with kRough: a scene with a lights list is rare enough to test its materials at run
 // time, and a fourth set of instantiations would cost every build for nothing).
-// In scenes of flat triangles and spheres alone, the surface points are the ISA's surface kernel's,
-// a chunk at a time. The flat diffuse vertices' light samples and continuations are left to the
-// ISA's shade kernels (kernels/shading): the loop draws their random numbers, picks their light points and queues
-// them in `diffuse`, and the kernels append their shadow rays and next rays, a chunk at a time,
-// among the other vertices'. Every path's terms are still added in the same order (its emission and photons
-// here, its light samples in index order by the shadow stage), and each path's random numbers
-// depend on the path alone, so the order of the queues changes no bit of the image. Not with a
-// lights list, whose samplers and continuations are other code.
+// The SIMD shade kernels (kernels/shading, the ISA's widest vector) take the common vertices: in
+// scenes of flat triangles and spheres alone the surface points, a chunk of hits at a time; the
+// flat diffuse vertices' light samples and continuations, for which the loop draws the random
+// numbers, picks the light points and queues them in `chunks.diffuse`, and the kernels append
+// shadow rays and next rays, a chunk at a time, among the other vertices'. Every path's terms
+// are still added in the same order (its emission and photons here, its light samples in index
+// order by the shadow stage), and each path's random numbers depend on the path alone, so the
+// order of the queues changes no bit of the image. Not with a lights list, whose samplers and
+// continuations are other code.
 template <typename E, bool kRecordAovs, bool kRough, bool kListedLights = false>
 void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounce, const RayQueue& rays, const HitQueue& hits,
                  PathTable& paths, ShadeChunks& chunks, RayQueue& next_rays, ShadowQueue& shadows,
@@ -46,7 +47,10 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
     const uint32_t shadow_ray_count = uint32_t(scene.settings.shadow_rays);
     const bool has_lights = !scene.lights.empty();
     const bool path_continues = int(bounce) + 1 < scene.settings.max_bounces;
-    const bool flat_surfaces = has_flat_surfaces_only(scene);
+    // One lane gains nothing from a kernel and pays for its queue: the scalar kernels' loop is the
+    // plain one (their width-1 shade kernels are the tests' and the perf gate's reference).
+    const bool vector_kernels = kernels.width > 1;
+    const bool flat_surfaces = vector_kernels && has_flat_surfaces_only(scene);
     SurfaceChunk& surfaces = chunks.surfaces;
     DiffuseVertexQueue& diffuse = chunks.diffuse;
     next_rays.count = 0;
@@ -112,7 +116,7 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
                                                                  photon_vertex_limit(scene, bounce))
                                                       .radiance);
         if constexpr (!kListedLights) {
-            if (continues_as_flat_diffuse(m, surface)) {  // the shade kernels' vertex (after the loop)
+            if (vector_kernels && continues_as_flat_diffuse(m, surface)) {  // the shade kernels' vertex
                 const bool samples_lights = has_lights && gathers_direct_light(m);
                 if (!samples_lights && !path_continues) continue;
                 const typename E::Sampler random(path, bounce, shadow_ray_count);
