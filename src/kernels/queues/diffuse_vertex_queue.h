@@ -20,8 +20,9 @@
 
 namespace wt {
 
-// Whether continue_path's work at a vertex is the kernel's: a Lambertian or Oren-Nayar material
-// on a surface without a shading normal (the folded BSDF about one stays scalar).
+// Whether a vertex's light samples and continuation are the shade kernels': a Lambertian or
+// Oren-Nayar material on a surface without a shading normal (the folded BSDF about one stays
+// scalar).
 inline bool continues_as_flat_diffuse(const Material& m, const SurfacePoint& surface) {
     return (m.type == MaterialType::lambertian || m.type == MaterialType::oren_nayar) && !surface.smooth;
 }
