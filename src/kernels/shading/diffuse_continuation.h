@@ -90,16 +90,12 @@ void continue_diffuse_vertices(const DiffuseVertexQueue& q, const DiffuseContinu
         for (int k = 0; k < 10; ++k) vfloat<N>::store(out[k], lanes[k]);
         for (uint32_t pushed = lanes_below(alive, q.count - i); pushed != 0; pushed &= pushed - 1) {
             const int lane = __builtin_ctz(pushed);
-            const std::size_t at = next.count++;
-            next.ox[at] = out[0][lane], next.oy[at] = out[1][lane], next.oz[at] = out[2][lane];
-            next.dx[at] = out[3][lane], next.dy[at] = out[4][lane], next.dz[at] = out[5][lane];
-            next.throughput_r[at] = out[6][lane], next.throughput_g[at] = out[7][lane], next.throughput_b[at] = out[8][lane];
-            if (settings.mis) next.bsdf_pdf[at] = out[9][lane];
-            next.path[at] = q.path[i + lane];
             const bool elsewhere =
                 settings.specular_light_elsewhere || (q.flags[i + lane] & DiffuseVertexQueue::kSpecularLightElsewhere);
-            next.count_emission[at] =
-                uint8_t((settings.mis ? RayQueue::kCountEmission : 0) | (elsewhere ? RayQueue::kSpecularLightElsewhere : 0));
+            if (settings.mis) next.bsdf_pdf[next.count] = out[9][lane];
+            next.push({{out[0][lane], out[1][lane], out[2][lane]}, {out[3][lane], out[4][lane], out[5][lane]}},
+                      {out[6][lane], out[7][lane], out[8][lane]}, q.path[i + lane],
+                      uint8_t((settings.mis ? RayQueue::kCountEmission : 0) | (elsewhere ? RayQueue::kSpecularLightElsewhere : 0)));
         }
     }
 }

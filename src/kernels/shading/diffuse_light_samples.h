@@ -22,7 +22,7 @@ inline namespace WT_SIMD_ISA {
 
 template <int N>
 void sample_diffuse_lights(const DiffuseVertexQueue& q, const DiffuseLightSampling& settings, ShadowQueue& shadows) {
-    alignas(64) float out[10][N];  // direction, tmax, contribution of each lane; the origin is per vertex
+    alignas(64) float out[7][N];  // direction, tmax, contribution of each lane; the origin is per vertex
     alignas(64) float origins[3][N];
     const float count = float(settings.count);
     for (std::size_t i = 0; i < q.count; i += N) {
@@ -93,13 +93,11 @@ void sample_diffuse_lights(const DiffuseVertexQueue& q, const DiffuseLightSampli
             for (int c = 0; c < 7; ++c) vfloat<N>::store(out[c], lanes[c]);
             for (uint32_t pushed = lanes_below(contributes, q.count - i); pushed != 0; pushed &= pushed - 1) {
                 const int lane = __builtin_ctz(pushed);
-                const std::size_t at = shadows.count++;
-                shadows.ox[at] = origins[0][lane], shadows.oy[at] = origins[1][lane], shadows.oz[at] = origins[2][lane];
-                shadows.dx[at] = out[0][lane], shadows.dy[at] = out[1][lane], shadows.dz[at] = out[2][lane];
-                shadows.tmax[at] = out[3][lane];
-                shadows.contribution_r[at] = out[4][lane], shadows.contribution_g[at] = out[5][lane],
-                shadows.contribution_b[at] = out[6][lane];
-                shadows.path[at] = q.path[i + lane];
+                ShadowRay shadow;
+                shadow.ray = {{origins[0][lane], origins[1][lane], origins[2][lane]}, {out[0][lane], out[1][lane], out[2][lane]}};
+                shadow.tmax = out[3][lane];
+                shadow.contribution = {out[4][lane], out[5][lane], out[6][lane]};
+                shadows.push(shadow, q.path[i + lane]);
             }
         }
     }
