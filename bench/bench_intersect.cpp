@@ -171,7 +171,8 @@ void measure_ours(benchmark::State& state, SceneWorkloads& scene, Query query, W
             measure(state, scene, query, workload, [&](const RayView& rays, QueryOutputs& out) { any(bvh, rays, out.occluded.data()); });
         return;
     }
-    const SceneView flat = scene_view(scene.scene());
+    const FlatScene flat_scene(scene.scene());
+    const SceneView flat = flat_scene.view();
     const bool ray_packets = layout == Layout::brute;
     if (query == Query::closest) {
         const auto closest = ray_packets ? kernels.closest_raypacket : kernels.closest_primpacket;

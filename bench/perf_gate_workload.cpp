@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
         const std::size_t n = rays.ox.size();
         std::vector<float> t(n), u(n), v(n);
         std::vector<uint32_t> prim(n);
-        intersect_kernels(Isa::scalar).closest_raypacket(scene_view(scene), rays.view(), {t.data(), u.data(), v.data(), prim.data()});
+        intersect_kernels(Isa::scalar).closest_raypacket(FlatScene(scene).view(), rays.view(), {t.data(), u.data(), v.data(), prim.data()});
         DiffuseVertexQueue queue;
         queue.reserve(n, 1);
         constexpr uint32_t kBounce = 3;  // past rr_start_bounce: the roulette runs
@@ -205,7 +205,8 @@ int main(int argc, char** argv) {
     const bool packets = layout == "bvhpackets";
     const bool bvh_layout = layout == "bvh" || packets;
     const Scene scene = bvh_layout ? meshed_scene(description) : build_scene(description);
-    const SceneView view = scene_view(scene);
+    const FlatScene flat_scene(scene);
+    const SceneView view = flat_scene.view();
     const Bvh bvh = bvh_layout ? build_bvh(scene, {8, 8, 1}) : Bvh();
     const BvhView tree = bvh_view(bvh);
     const IntersectKernels& k = intersect_kernels(*isa);

@@ -42,11 +42,12 @@ struct FlatAnswers {
 
     FlatAnswers(const Scene& scene, const test::RayBatch& rays) {
         const IntersectKernels& k = intersect_kernels(best_supported_isa(), scene.settings.accuracy);
+        const FlatScene flat(scene);
         for (int bounded = 0; bounded < 2; ++bounded) {
             closest[bounded] = test::HitArrays(rays.size());
             any[bounded].assign(rays.size(), 7);
-            k.closest_raypacket(scene_view(scene), rays.view(bounded), closest[bounded].view());
-            k.any_raypacket(scene_view(scene), rays.view(bounded), any[bounded].data());
+            k.closest_raypacket(flat.view(), rays.view(bounded), closest[bounded].view());
+            k.any_raypacket(flat.view(), rays.view(bounded), any[bounded].data());
         }
     }
 };

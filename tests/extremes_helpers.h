@@ -147,7 +147,8 @@ inline std::vector<ImplementationRun> intersect_everywhere(const Scene& scene, c
         tmax[i] = queries[i].tmax;
     }
     const RayView rays{ox.data(), oy.data(), oz.data(), dx.data(), dy.data(), dz.data(), tmax.data(), uint32_t(n)};
-    const SceneView view = scene_view(scene);
+    const FlatScene flat_scene(scene);
+    const SceneView view = flat_scene.view();
     for (Isa isa : supported_isas()) {
         const IntersectKernels& k = intersect_kernels(isa, scene.settings.accuracy);
         struct Layout {

@@ -100,7 +100,8 @@ TEST_P(PacketIntersect, ClosestHitEqualsScalarInBothLayouts) {
     SCOPED_TRACE(std::string(name_of(accuracy.triangles)) + " + " + name_of(accuracy.spheres));
     rebuild_for(accuracy);
     const IntersectKernels& k = intersect_kernels(GetParam(), accuracy);
-    const SceneView view = scene_view(scene_);
+    const FlatScene flat_scene(scene_);
+    const SceneView view = flat_scene.view();
     const std::size_t n = rays_.ox.size();
     for (auto closest : {k.closest_raypacket, k.closest_primpacket}) {
         std::vector<float> t(n), u(n), v(n);
@@ -124,7 +125,8 @@ TEST_P(PacketIntersect, AnyHitEqualsScalarInBothLayouts) {
         SCOPED_TRACE(std::string(name_of(accuracy.triangles)) + " + " + name_of(accuracy.spheres));
         rebuild_for(accuracy);
         const IntersectKernels& k = intersect_kernels(GetParam(), accuracy);
-        const SceneView view = scene_view(scene_);
+        const FlatScene flat_scene(scene_);
+        const SceneView view = flat_scene.view();
         const std::size_t n = rays_.ox.size();
         for (auto any : {k.any_raypacket, k.any_primpacket}) {
             std::vector<uint8_t> occluded(n, 7);
@@ -137,7 +139,8 @@ TEST_P(PacketIntersect, AnyHitEqualsScalarInBothLayouts) {
 
 TEST_P(PacketIntersect, EveryPartialPacketLengthAndNoWritesPastTheEnd) {
     const IntersectKernels& k = intersect_kernels(GetParam());
-    const SceneView view = scene_view(scene_);
+    const FlatScene flat_scene(scene_);
+    const SceneView view = flat_scene.view();
     for (std::size_t count = 0; count <= 33; ++count) {
         const RayView rays = rays_.view(true, 100, count);
         std::vector<float> t(count + 1, -1.0f), u(count + 1), v(count + 1);
@@ -161,7 +164,8 @@ TEST_P(PacketIntersect, EveryPartialPacketLengthAndNoWritesPastTheEnd) {
 
 TEST_P(PacketIntersect, SceneWithoutSpheresOrTriangles) {
     const IntersectKernels& k = intersect_kernels(GetParam());
-    SceneView view = scene_view(scene_);
+    const FlatScene flat_scene(scene_);
+    SceneView view = flat_scene.view();
     view.spheres.count = 0;
     std::vector<float> t(64), u(64), v(64);
     std::vector<uint32_t> prim(64);

@@ -1,8 +1,9 @@
-// What a scene's TriangleSoA stores: v0, the edges and the material always; the scaled normal
-// only for Moller-Trumbore and the other two vertices only for the watertight test; the unit
-// normal never (computed from the edges). A scene built for one test and then asked to run the
-// other is refused with a message, never read out of bounds.
+// What a scene's TriangleSoA stores: each mesh vertex once and three indices and a material per
+// triangle, whichever the test; the edges, normals and corners the tests read are derived from
+// them. A scene built for one test and then asked to run the other is refused with a message.
+// The flat kernels' rows (triangle_rows.h) are copies of exactly what the accessors return.
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -11,6 +12,7 @@
 
 #include "core/scene/scene.h"
 #include "kernels/isa/intersect_dispatch.h"
+#include "kernels/primitives/triangle_rows.h"
 #include "kernels/renderer.h"
 #include "bvh_test_scenes.h"
 
@@ -26,26 +28,27 @@ SceneDescription hexroom_of_triangles(TriangleTest test) {
     return d;
 }
 
-TEST(TriangleStorage, ASceneStoresOnlyTheRowsItsTestReads) {
-    const Scene mt = build_scene(hexroom_of_triangles(TriangleTest::moller_trumbore));
+TEST(TriangleStorage, ASceneStoresEachMeshVertexOnce) {
+    const SceneDescription d = hexroom_of_triangles(TriangleTest::moller_trumbore);
+    const Scene mt = build_scene(d);
     const Scene wt = build_scene(hexroom_of_triangles(TriangleTest::watertight));
     ASSERT_GT(mt.triangles.size(), 2000u);
     ASSERT_EQ(wt.triangles.size(), mt.triangles.size());
-    const std::size_t n = mt.triangles.size();
+    std::size_t vertices = 0, triangles = 0;
+    for (const TriangleMesh& m : d.meshes) vertices += m.vertices.size(), triangles += m.triangles.size();
+    ASSERT_EQ(mt.triangles.size(), triangles);
+    ASSERT_LT(vertices, triangles);  // the meshes share vertices between triangles
+    for (const Scene* s : {&mt, &wt}) {
+        EXPECT_EQ(s->triangles.vertex_count(), vertices);
+        EXPECT_EQ(s->triangles.bytes(), vertices * 3 * sizeof(float) + triangles * 4 * sizeof(uint32_t));
+    }
 
     EXPECT_TRUE(mt.triangles.has_scaled_normal());
     EXPECT_FALSE(mt.triangles.has_vertices());
-    EXPECT_EQ(mt.triangles.scaled_nx.size(), n);
-    EXPECT_TRUE(mt.triangles.v1x.empty() && mt.triangles.v2z.empty());
-    EXPECT_EQ(mt.triangles.bytes(), n * (12 * sizeof(float) + sizeof(uint32_t)));  // 52 B
-
     EXPECT_TRUE(wt.triangles.has_vertices());
     EXPECT_FALSE(wt.triangles.has_scaled_normal());
-    EXPECT_EQ(wt.triangles.v1x.size(), n);
-    EXPECT_TRUE(wt.triangles.scaled_nx.empty());
-    EXPECT_EQ(wt.triangles.bytes(), n * (15 * sizeof(float) + sizeof(uint32_t)));  // 64 B
 
-    // A TriangleSoA of its own (tests, benchmarks) keeps both, for either test.
+    // A TriangleSoA of its own (tests, benchmarks) serves both tests.
     TriangleSoA both;
     both.push_back({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0);
     EXPECT_TRUE(both.serves(TriangleTest::moller_trumbore) && both.serves(TriangleTest::watertight));
@@ -91,7 +94,7 @@ TEST(TriangleStorage, TheOtherTestIsRefusedNotReadOutOfBounds) {
         SCOPED_TRACE(std::string("built for ") + name_of(built));
         Scene scene = build_scene(hexroom_of_triangles(built));
         ASSERT_EQ(scene.triangles.parallelogram_count, 0u);
-        EXPECT_NO_THROW(scene_view(scene));
+        EXPECT_NO_THROW(FlatScene(scene).view());
         scene.settings.accuracy.triangles =
             built == TriangleTest::moller_trumbore ? TriangleTest::watertight : TriangleTest::moller_trumbore;
         try {
@@ -101,34 +104,61 @@ TEST(TriangleStorage, TheOtherTestIsRefusedNotReadOutOfBounds) {
         } catch (const std::invalid_argument& e) {
             EXPECT_NE(std::string(e.what()).find("stored for another triangle test"), std::string::npos) << e.what();
         }
-        EXPECT_THROW(scene_view(scene), std::invalid_argument);
+        EXPECT_THROW(FlatScene(scene).view(), std::invalid_argument);
     }
 }
 
-// The copy a BVH keeps of a scene's parallelograms (tested beside its tree): the first n entries
-// of exactly the rows the scene stores, bit for bit, and its parallelograms among them.
-TEST(TriangleStorage, FirstCopiesTheLeadingEntriesOfTheStoredRows) {
-    const Scene scene = build_scene(test::hexroom_with_meshes(4, 4, 1));
-    const TriangleSoA& t = scene.triangles;
-    ASSERT_GT(t.parallelogram_count, 0u);
-    ASSERT_GT(t.size(), std::size_t(t.parallelogram_count) + 2);
-    for (const std::size_t n : {std::size_t(t.parallelogram_count), std::size_t(t.parallelogram_count) + 2}) {
-        const TriangleSoA first = t.first(n);
-        ASSERT_EQ(first.size(), n);
-        EXPECT_EQ(first.parallelogram_count, t.parallelogram_count);
-        EXPECT_EQ(first.has_scaled_normal(), t.has_scaled_normal());
-        EXPECT_EQ(first.has_vertices(), t.has_vertices());
-        EXPECT_TRUE(first.v1x.empty());
-        for (std::size_t i = 0; i < n; ++i) {
-            EXPECT_EQ(first.vertex0(i), t.vertex0(i)) << i;
-            EXPECT_EQ(first.edge1(i), t.edge1(i)) << i;
-            EXPECT_EQ(first.edge2(i), t.edge2(i)) << i;
-            EXPECT_EQ(first.scaled_normal(i), t.scaled_normal(i)) << i;
-            EXPECT_EQ(first.material[i], t.material[i]) << i;
+// The rows the flat kernels and a BVH's beside list read: the first n entries, bit for bit what
+// the scene's accessors return, only the rows of the scene's test, and its parallelograms.
+TEST(TriangleStorage, RowsCopyTheLeadingEntriesBitForBit) {
+    for (TriangleTest test : {TriangleTest::moller_trumbore, TriangleTest::watertight}) {
+        SCOPED_TRACE(std::string("stored for ") + name_of(test));
+        SceneDescription d = test::hexroom_with_meshes(4, 4, 1);
+        d.settings.accuracy.triangles = test;
+        const Scene scene = build_scene(d);
+        const TriangleSoA& t = scene.triangles;
+        ASSERT_EQ(t.parallelogram_count > 0, test == TriangleTest::moller_trumbore);
+        for (const std::size_t n : {std::size_t(t.parallelogram_count), std::size_t(t.parallelogram_count) + 2, t.size()}) {
+            const TriangleRows rows = triangle_rows(t, n);
+            ASSERT_EQ(rows.count, n);
+            EXPECT_EQ(rows.parallelogram_count, t.parallelogram_count);
+            const bool mt = test == TriangleTest::moller_trumbore;
+            EXPECT_EQ(rows.scaled_nx.size(), mt ? n : 0u);
+            EXPECT_EQ(rows.v1x.size(), mt ? 0u : n);
+            const auto at = [](const AlignedVector<float>& x, const AlignedVector<float>& y, const AlignedVector<float>& z,
+                               std::size_t i) { return glm::vec3(x[i], y[i], z[i]); };
+            for (std::size_t i = 0; i < n; ++i) {
+                ASSERT_EQ(at(rows.v0x, rows.v0y, rows.v0z, i), t.vertex0(i)) << i;
+                ASSERT_EQ(at(rows.e1x, rows.e1y, rows.e1z, i), t.edge1(i)) << i;
+                ASSERT_EQ(at(rows.e2x, rows.e2y, rows.e2z, i), t.edge2(i)) << i;
+                if (mt) {
+                    ASSERT_EQ(at(rows.scaled_nx, rows.scaled_ny, rows.scaled_nz, i), t.scaled_normal(i)) << i;
+                } else {
+                    ASSERT_EQ(at(rows.v1x, rows.v1y, rows.v1z, i), t.vertex1(i)) << i;
+                    ASSERT_EQ(at(rows.v2x, rows.v2y, rows.v2z, i), t.vertex2(i)) << i;
+                }
+            }
         }
+        EXPECT_EQ(triangle_rows(t, 1).parallelogram_count, std::min(1u, t.parallelogram_count));
+        EXPECT_THROW(triangle_rows(t, t.size() + 1), std::logic_error);
     }
-    EXPECT_EQ(t.first(1).parallelogram_count, 1u);
-    EXPECT_THROW(t.first(t.size() + 1), std::logic_error);
+}
+
+// A sliver is stored with all three indices on its first vertex, so its edges are exactly zero.
+TEST(TriangleStorage, ASliverCollapsesOntoItsFirstVertex) {
+    TriangleSoA t;
+    const uint32_t first = t.add_vertices({{0, 0, 0}, {1, 0, 0}, {2, 1e-9f, 0}, {0, 1, 0}});
+    t.push(first, first + 1, first + 2, 0);  // collinear to float precision
+    t.push(first, first + 1, first + 3, 0);
+    EXPECT_EQ(t.i1[0], first);
+    EXPECT_EQ(t.i2[0], first);
+    EXPECT_EQ(t.edge1(0), glm::vec3(0.0f));
+    EXPECT_EQ(t.edge2(0), glm::vec3(0.0f));
+    EXPECT_EQ(t.normal(0), glm::vec3(0.0f));
+    EXPECT_EQ(t.edge1(1), glm::vec3(1, 0, 0));
+    EXPECT_EQ(t.edge2(1), glm::vec3(0, 1, 0));
+    EXPECT_EQ(t.normal(1), glm::vec3(0, 0, 1));
+    EXPECT_EQ(t.vertex_count(), 4u);
 }
 
 }  // namespace

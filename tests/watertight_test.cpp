@@ -95,7 +95,7 @@ std::vector<Hit> closest_hits(const Scene& scene, const std::vector<Ray>& rays, 
     std::vector<float> t(n), u(n), v(n);
     std::vector<uint32_t> prim(n);
     const IntersectKernels& k = intersect_kernels(isa, scene.settings.accuracy);
-    k.closest_raypacket(scene_view(scene), {ox.data(), oy.data(), oz.data(), dx.data(), dy.data(), dz.data(), nullptr, uint32_t(n)},
+    k.closest_raypacket(FlatScene(scene).view(), {ox.data(), oy.data(), oz.data(), dx.data(), dy.data(), dz.data(), nullptr, uint32_t(n)},
                         {t.data(), u.data(), v.data(), prim.data()});
     std::vector<Hit> hits(n);
     for (std::size_t i = 0; i < n; ++i) hits[i].t = t[i], hits[i].u = u[i], hits[i].v = v[i], hits[i].prim = prim[i];

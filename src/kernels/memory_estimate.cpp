@@ -82,9 +82,15 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderOptions& o
             options.aovs.needs_path_data(), !scene.emitter_selection.empty()));
     if (scene.light_traces_caustics) e.queues_per_worker += double(LightTracingPass::bytes_per_worker());
     const int lanes = intersect_kernels(options.isa.value_or(best_supported_isa()), s.accuracy).width;
-    if (resolve_accel(options.accel, scene.primitive_count(), lanes, !scene.instances.empty() || scene.has_alpha_materials) == Accel::bvh)
-        e.bvh = bvh_bytes(scene, options);
     e.geometry = geometry_bytes(scene);
+    if (resolve_accel(options.accel, scene.primitive_count(), lanes, !scene.instances.empty() || scene.has_alpha_materials) == Accel::bvh) {
+        e.bvh = bvh_bytes(scene, options);
+    } else {
+        // The flat kernels' rows (triangle_rows.h): v0, the edges and the scaled normal, or
+        // v0, the edges and the other two vertices.
+        const double floats = s.accuracy.triangles == TriangleTest::watertight ? 15.0 : 12.0;
+        e.geometry += double(scene.triangles.size()) * floats * sizeof(float);
+    }
     if (scene.merges_photons) e.photons = photon_batch_bytes(scene, options.photon_batch_paths);
     e.instance_count = scene.instances.instances.size();
     if (e.instance_count > 0) e.instances = double(e.instance_count) * bytes_per_instance(options.bvh.node_width);

@@ -58,6 +58,8 @@ RenderSession::RenderSession(const Scene& scene, const RenderOptions& options)
         BvhBuildOptions bvh_options = options.bvh;
         bvh_options.parallelograms_beside = parallelograms_beside_tree(kernels_->width);
         bvh_ = build_scene_bvh(scene, bvh_options, &pool_);
+    } else {
+        flat_ = std::make_unique<FlatScene>(scene);
     }
     if (scene.light_traces_caustics)
         light_tracing_ = std::make_unique<LightTracingPass>(scene, accel_ == Accel::bvh ? &bvh_.view : nullptr, threads_);
@@ -91,8 +93,12 @@ void RenderSession::render_samples(Film& film, SampleRange range, const std::fun
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+IntersectContext RenderSession::intersect_context() const {
+    return {flat_ ? flat_->view() : SceneView{}, kernels_, flat_ ? nullptr : &bvh_.view};
+}
+
 void RenderSession::trace_light_paths(Film& film, SampleRange range, PhotonMaps* photons) {
-    const IntersectContext context{scene_view(scene_), kernels_, accel_ == Accel::bvh ? &bvh_.view : nullptr};
+    const IntersectContext context = intersect_context();
     light_tracing_->render(film, range.begin, range.end, pool_, counts_,
                            options_.integrator == Integrator::wavefront ? &context : nullptr, photons);
 }
@@ -116,8 +122,7 @@ void RenderSession::render_camera_paths(Film& film, SampleRange range, const std
 
 void RenderSession::render_tiles(Film& film, SampleRange range, const std::function<void(uint64_t)>& tile_done,
                                  const AdaptiveState* adaptive) {
-    const BvhView* tree = accel_ == Accel::bvh ? &bvh_.view : nullptr;
-    const IntersectContext context{scene_view(scene_), kernels_, tree};
+    const IntersectContext context = intersect_context();
     pool_.parallel_for(tiles_.size(), [&](std::size_t item, int worker) {
         const Tile& tile = tiles_[item];
         RayCounts& c = counts_[std::size_t(worker)];
@@ -128,9 +133,9 @@ void RenderSession::render_tiles(Film& film, SampleRange range, const std::funct
             // Every pixel of the tile has stopped.
         } else if (options_.integrator == Integrator::reference) {
             if (adaptive)
-                render_reference_pixels(scene_, pixels, range.begin, range.end, film, c, tree, options_.aovs, photons_.get());
+                render_reference_pixels(scene_, pixels, range.begin, range.end, film, c, context.bvh, options_.aovs, photons_.get());
             else
-                render_reference_tile(scene_, tile, range.begin, range.end, film, c, tree, options_.aovs, photons_.get());
+                render_reference_tile(scene_, tile, range.begin, range.end, film, c, context.bvh, options_.aovs, photons_.get());
         } else {
             auto& ws = workspaces_[std::size_t(worker)];
             if (!ws) {

@@ -59,6 +59,8 @@ struct RenderResult {
 };
 
 struct WavefrontWorkspace;
+class FlatScene;
+struct IntersectContext;
 class LightTracingPass;
 class PhotonMaps;
 
@@ -101,6 +103,7 @@ private:
                              const AdaptiveState* adaptive);
     // The light paths of `range` (splats, and with `photons` the photons of a batch).
     void trace_light_paths(Film& film, SampleRange range, PhotonMaps* photons);
+    IntersectContext intersect_context() const;
 
     const Scene& scene_;
     RenderOptions options_;
@@ -111,6 +114,7 @@ private:
     ThreadPool pool_;
     const IntersectKernels* kernels_;
     SceneBvh bvh_;
+    std::unique_ptr<FlatScene> flat_;  // the flat kernels' rows, only when the scene is not traced through bvh_
     std::vector<RayCounts> counts_;
     // Created by the worker that uses it, on first use, so its pages live near that core.
     std::vector<std::unique_ptr<WavefrontWorkspace>> workspaces_;

@@ -1,9 +1,9 @@
 #pragma once
-// Geometry as structure-of-arrays buffers: one array per component, so the intersect kernels
-// read N primitives (or N rays' worth of one primitive) with contiguous vector loads.
+// Geometry as structure-of-arrays buffers: one array per component.
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -20,14 +20,17 @@ namespace wt {
 // the light area they cover is below 2e-6 of their bounding rectangle.
 bool is_sliver(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 
-// Triangles as a vertex and the two edges leaving it (what a hit's position, error bound and
-// normal are computed from), plus what the scene's triangle test reads: for Moller-Trumbore
-// the edges' cross product cross(e1, e2) unnormalized (the "scaled normal", twice the area
-// long); for the watertight test the other two vertices as given (rebuilt as v0 + e1 they would
-// round differently in neighbouring triangles, and the shared edge would no longer be shared).
-// A scene stores only its own test's rows (store_only_for); a default TriangleSoA stores both.
-// The unit normal is not stored: normal(i) computes it from the edges exactly as it would have
-// been stored (-ffp-contract=off makes that the same rounding everywhere).
+// Triangles as meshes store them: each vertex once, three indices per triangle (v0 first), so a
+// mesh costs 16 bytes a triangle and 12 a vertex (about 22 bytes a triangle for a closed mesh),
+// where rows of v0, the edges and the scaled normal took 52. What a test reads is derived from
+// them, bit for bit what rows computed once would hold (-ffp-contract=off makes every rounding
+// the same everywhere): the edges v1 - v0 and v2 - v0, for Moller-Trumbore their cross product
+// cross(e1, e2) unnormalized (the "scaled normal", twice the area long), for the watertight test
+// the vertices as given (rebuilt as v0 + e1 they would round differently in neighbouring
+// triangles, and the shared edge would no longer be shared). The kernels that load N triangles
+// at a time read rows copied from here (kernels/primitives/triangle_rows.h) or a BVH's leaves.
+// A scene is stored for its own test (store_only_for), which decides the corners vertex1() and
+// vertex2() return; a default TriangleSoA serves both.
 //
 // The first `parallelogram_count` entries are parallelograms, not triangles: the same v0, e1,
 // e2 and normal, covering v0 + u e1 + v e2 for (u, v) in the unit square instead of the
@@ -36,41 +39,46 @@ bool is_sliver(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 // way; only the inside test and light sampling differ. Only the Moller-Trumbore test knows
 // parallelograms: build_scene() splits quads into triangles for the watertight test.
 struct TriangleSoA {
-    AlignedVector<float> v0x, v0y, v0z;
-    AlignedVector<float> v1x, v1y, v1z;  // empty unless has_vertices()
-    AlignedVector<float> v2x, v2y, v2z;
-    AlignedVector<float> e1x, e1y, e1z;
-    AlignedVector<float> e2x, e2y, e2z;
-    AlignedVector<float> scaled_nx, scaled_ny, scaled_nz;  // empty unless has_scaled_normal()
+    AlignedVector<float> px, py, pz;      // the vertices
+    AlignedVector<uint32_t> i0, i1, i2;   // per entry, its vertices' indices
     AlignedVector<uint32_t> material;
     uint32_t parallelogram_count = 0;
 
     std::size_t size() const { return material.size(); }
-    // Store only the rows `test` reads from now on; std::logic_error once a triangle is stored.
+    std::size_t vertex_count() const { return px.size(); }
+    // Store for `test` from now on; std::logic_error once a triangle is stored.
     void store_only_for(TriangleTest test);
-    bool has_vertices() const { return keeps_vertices_; }
-    bool has_scaled_normal() const { return keeps_scaled_normal_; }
-    // Whether `test` finds what it reads here (no triangles: nothing to read).
+    bool has_vertices() const { return keeps_vertices_; }          // serves the watertight test
+    bool has_scaled_normal() const { return keeps_scaled_normal_; }  // serves Moller-Trumbore
+    // Whether `test` finds its corners here (no triangles: nothing to read).
     bool serves(TriangleTest test) const {
         return size() == 0 || (test == TriangleTest::watertight ? keeps_vertices_ : keeps_scaled_normal_);
     }
     std::size_t bytes() const;
-    // A copy of the first n entries (n <= size()), the same rows stored, bit for bit.
-    TriangleSoA first(std::size_t n) const;
     bool is_parallelogram(std::size_t i) const { return i < parallelogram_count; }
-    // A sliver (see is_sliver) is stored collapsed onto its first vertex.
-    void push_back(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id);
+
+    // Vertices for the triangles pushed after; returns the index of the first, which push()'s
+    // indices are offset by. std::length_error past 2^31 - 1 vertices in all.
+    uint32_t add_vertices(const std::vector<glm::vec3>& vertices);
+    // The triangle of vertices a, b, c (indices among those added). A sliver (see is_sliver) is
+    // stored collapsed onto a: all three indices a, so its edges are zero.
+    void push(uint32_t a, uint32_t b, uint32_t c, uint32_t material_id);
     // The parallelogram with corners a, b, b + d - a, d. All parallelograms come before the
     // first triangle (std::logic_error otherwise), so kernels loop over two plain ranges.
+    void push_parallelogram(uint32_t a, uint32_t b, uint32_t d, uint32_t material_id);
+    // One triangle with vertices of its own (tests, benchmarks).
+    void push_back(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id);
     void push_parallelogram(const glm::vec3& a, const glm::vec3& b, const glm::vec3& d, uint32_t material_id);
-    glm::vec3 vertex0(std::size_t i) const { return {v0x[i], v0y[i], v0z[i]}; }
-    // The other two vertices as the scene's test sees them: as given where they are stored, else
-    // v0 + e1 and v0 + e2, the corners Moller-Trumbore's v0 + u e1 + v e2 reaches.
-    glm::vec3 vertex1(std::size_t i) const { return keeps_vertices_ ? glm::vec3(v1x[i], v1y[i], v1z[i]) : vertex0(i) + edge1(i); }
-    glm::vec3 vertex2(std::size_t i) const { return keeps_vertices_ ? glm::vec3(v2x[i], v2y[i], v2z[i]) : vertex0(i) + edge2(i); }
-    glm::vec3 edge1(std::size_t i) const { return {e1x[i], e1y[i], e1z[i]}; }
-    glm::vec3 edge2(std::size_t i) const { return {e2x[i], e2y[i], e2z[i]}; }
-    glm::vec3 scaled_normal(std::size_t i) const { return {scaled_nx[i], scaled_ny[i], scaled_nz[i]}; }  // only if has_scaled_normal()
+
+    glm::vec3 position(uint32_t v) const { return {px[v], py[v], pz[v]}; }
+    glm::vec3 vertex0(std::size_t i) const { return position(i0[i]); }
+    glm::vec3 edge1(std::size_t i) const { return position(i1[i]) - vertex0(i); }
+    glm::vec3 edge2(std::size_t i) const { return position(i2[i]) - vertex0(i); }
+    // The other two vertices as the scene's test sees them: as given for the watertight test,
+    // else v0 + e1 and v0 + e2, the corners Moller-Trumbore's v0 + u e1 + v e2 reaches.
+    glm::vec3 vertex1(std::size_t i) const { return keeps_vertices_ ? position(i1[i]) : vertex0(i) + edge1(i); }
+    glm::vec3 vertex2(std::size_t i) const { return keeps_vertices_ ? position(i2[i]) : vertex0(i) + edge2(i); }
+    glm::vec3 scaled_normal(std::size_t i) const { return glm::cross(edge1(i), edge2(i)); }
     // The unit geometric normal; 0 for a sliver.
     glm::vec3 normal(std::size_t i) const { return unit_normal(glm::cross(edge1(i), edge2(i))); }
 
@@ -79,7 +87,6 @@ private:
         const float length = glm::length(cross);
         return length > 0.0f ? cross / length : glm::vec3(0.0f);
     }
-    void push(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id);
     bool keeps_vertices_ = true, keeps_scaled_normal_ = true;
 };
 

@@ -56,8 +56,9 @@ void build_instances(const SceneDescription& d, uint32_t first_id, SceneInstance
                                             "\" emits light; the light table holds the scene's own triangles only");
             const bool has_normals = smooth && !part.normals.empty() && !part.triangles.empty();
             const uint32_t normal_base = has_normals ? mesh.shading_normals.add_vertex_normals(part.normals) : 0;
+            const uint32_t first = mesh.triangles.add_vertices(part.vertices);
             for (const auto& tri : part.triangles) {
-                mesh.triangles.push_back(part.vertices[tri[0]], part.vertices[tri[1]], part.vertices[tri[2]], part.material);
+                mesh.triangles.push(first + tri[0], first + tri[1], first + tri[2], part.material);
                 if (textured) push_texture_coordinates(mesh.texture_coordinates, part, tri);
                 if (!smooth) continue;
                 if (!has_normals) mesh.shading_normals.push_flat();

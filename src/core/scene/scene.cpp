@@ -133,7 +133,8 @@ Scene build_scene(const SceneDescription& description) {
         const TriangleMesh& mesh = description.meshes[k];
         check_vertex_attribute_counts(mesh, "mesh " + std::to_string(k) + " has");
         if (!as_parallelogram(mesh)) continue;
-        scene.triangles.push_parallelogram(mesh.vertices[0], mesh.vertices[1], mesh.vertices[3], mesh.material);
+        const uint32_t first = scene.triangles.add_vertices(mesh.vertices);
+        scene.triangles.push_parallelogram(first, first + 1, first + 3, mesh.material);
         if (smooth) scene.shading_normals.push_flat();
         if (textured) scene.texture_coordinates.push({}, {}, {}, 0.0f);
     }
@@ -141,8 +142,9 @@ Scene build_scene(const SceneDescription& description) {
         if (as_parallelogram(mesh)) continue;
         const bool has_normals = smooth && !mesh.normals.empty() && !mesh.triangles.empty();
         const uint32_t normal_base = has_normals ? scene.shading_normals.add_vertex_normals(mesh.normals) : 0;
+        const uint32_t first = scene.triangles.add_vertices(mesh.vertices);
         for (const auto& tri : mesh.triangles) {
-            scene.triangles.push_back(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], mesh.material);
+            scene.triangles.push(first + tri[0], first + tri[1], first + tri[2], mesh.material);
             if (textured) push_texture_coordinates(scene.texture_coordinates, mesh, tri);
             if (!smooth) continue;
             if (!has_normals) scene.shading_normals.push_flat();

@@ -20,6 +20,7 @@
 #include "core/scene/scene.h"
 #include "kernels/accel/bvh_primitives.h"
 #include "kernels/accel/bvh_view.h"
+#include "kernels/primitives/triangle_rows.h"
 
 namespace wt {
 
@@ -68,7 +69,7 @@ private:
     AlignedVector<BvhNode<4>> nodes4_;  // the one of the two that node_width_ names
     AlignedVector<BvhNode<8>> nodes8_;
     BvhPrimitives primitives_;
-    TriangleSoA beside_;  // a copy of the scene's first stats_.beside_count entries, its parallelograms
+    TriangleRows beside_;  // the scene's first stats_.beside_count entries, its parallelograms
     BvhStats stats_;
 };
 

@@ -13,17 +13,14 @@
 #include "kernels/accel/bvh_boxes.h"
 #include "kernels/accel/bvh_collapse.h"
 #include "kernels/accel/sah_builder.h"
-#include "kernels/primitives/triangle_view.h"
+#include "kernels/primitives/triangle_rows.h"
 
 namespace wt {
 namespace {
 
 // Slivers are stored collapsed onto their first vertex (geometry_soa.h): no test can hit them,
 // so they stay out of the tree.
-bool never_hit(const TriangleSoA& t, std::size_t i) {
-    return t.e1x[i] == 0.0f && t.e1y[i] == 0.0f && t.e1z[i] == 0.0f && t.e2x[i] == 0.0f && t.e2y[i] == 0.0f &&
-           t.e2z[i] == 0.0f;
-}
+bool never_hit(const TriangleSoA& t, std::size_t i) { return t.i1[i] == t.i0[i] && t.i2[i] == t.i0[i]; }
 
 PrimRef make_ref(const Box& box, uint32_t id, BvhLeafKind kind) {
     PrimRef r;
@@ -39,7 +36,8 @@ PrimRef triangle_ref(const TriangleSoA& t, std::size_t i) {
     // square, and the vertices the watertight test reads.
     Box box;
     const glm::vec3 v0 = t.vertex0(i), e1 = t.edge1(i), e2 = t.edge2(i);
-    box.extend_point(v0), box.extend_point(t.vertex1(i)), box.extend_point(t.vertex2(i));
+    box.extend_point(v0), box.extend_point(t.has_vertices() ? t.position(t.i1[i]) : v0 + e1);
+    box.extend_point(t.has_vertices() ? t.position(t.i2[i]) : v0 + e2);
     box.extend_point(v0 + e1), box.extend_point(v0 + e2);
     const bool parallelogram = t.is_parallelogram(i);
     if (parallelogram) box.extend_point(v0 + e1 + e2);
@@ -77,9 +75,26 @@ void fill_leaf_blocks(const TriangleSoA& t, const SphereSoA& s, const std::vecto
                       const std::vector<uint32_t>& leaves, BvhPrimitives& primitives, ThreadPool& pool) {
     primitives.resize(ids.size());
     constexpr std::size_t kLeavesPerJob = 4096;
+    const auto each_triangle_of = [&](std::size_t leaf, auto&& visit) {
+        const uint32_t first = leaves[leaf] & kBvhFirstMask;
+        const uint32_t count = ((leaves[leaf] >> kBvhCountShift) & 7u) + 1u;
+        for (uint32_t k = first; k < first + count; ++k)
+            if (ids[k] < t.size()) visit(ids[k]);
+    };
+    // A triangle's rows are read through its vertex indices, two dependent cache misses in leaf
+    // order (which is not id order): the indices are fetched two leaves ahead, the vertices one.
+    const auto prefetch_indices = [&](uint32_t id) {
+        __builtin_prefetch(&t.i0[id]), __builtin_prefetch(&t.i1[id]), __builtin_prefetch(&t.i2[id]);
+    };
+    const auto prefetch_vertices = [&](uint32_t id) {
+        for (const uint32_t v : {t.i0[id], t.i1[id], t.i2[id]})
+            __builtin_prefetch(&t.px[v]), __builtin_prefetch(&t.py[v]), __builtin_prefetch(&t.pz[v]);
+    };
     pool.parallel_for((leaves.size() + kLeavesPerJob - 1) / kLeavesPerJob, [&](std::size_t job, int) {
         const std::size_t end = std::min(leaves.size(), (job + 1) * kLeavesPerJob);
         for (std::size_t i = job * kLeavesPerJob; i < end; ++i) {
+            if (i + 2 < end) each_triangle_of(i + 2, prefetch_indices);
+            if (i + 1 < end) each_triangle_of(i + 1, prefetch_vertices);
             const uint32_t first = leaves[i] & kBvhFirstMask;
             const uint32_t count = ((leaves[i] >> kBvhCountShift) & 7u) + 1u;
             primitives.fill_leaf(t, s, first, ids.data() + first, count);
@@ -129,11 +144,11 @@ Bvh build_bvh(const TriangleSoA& triangles, const SphereSoA& spheres, TriangleTe
     Bvh bvh;
     bvh.node_width_ = options.node_width;
     bvh.primitives_.test = test;
-    // A few parallelograms (a room's walls) are tested beside the tree, from a copy of their rows.
+    // A few parallelograms (a room's walls) are tested beside the tree, from rows of their own.
     const bool beside = options.parallelograms_beside && test == TriangleTest::moller_trumbore &&
                         triangles.parallelogram_count > 0 && triangles.parallelogram_count <= kBvhMostBeside;
     if (beside) {
-        bvh.beside_ = triangles.first(triangles.parallelogram_count);
+        bvh.beside_ = triangle_rows(triangles, triangles.parallelogram_count);
         bvh.stats_.beside_count = triangles.parallelogram_count;
     }
     PrimRefs refs = primitive_refs(triangles, spheres, uint32_t(bvh.stats_.beside_count), *pool);

@@ -20,11 +20,11 @@ void primitive_rows(const TriangleSoA& t, const SphereSoA& s, TriangleTest test,
         const float row[] = {s.cx[k], s.cy[k], s.cz[k], s.radius[k]};
         std::memcpy(out, row, sizeof row);
     } else if (test == TriangleTest::watertight) {
-        const float row[] = {t.v0x[i], t.v0y[i], t.v0z[i], t.v1x[i], t.v1y[i], t.v1z[i], t.v2x[i], t.v2y[i], t.v2z[i]};
+        const glm::vec3 row[] = {t.vertex0(i), t.vertex1(i), t.vertex2(i)};
         std::memcpy(out, row, sizeof row);
     } else {
-        const float row[] = {t.v0x[i], t.v0y[i], t.v0z[i], t.e1x[i], t.e1y[i], t.e1z[i],
-                             t.e2x[i], t.e2y[i], t.e2z[i], t.scaled_nx[i], t.scaled_ny[i], t.scaled_nz[i]};
+        const glm::vec3 v0 = t.vertex0(i), e1 = t.position(t.i1[i]) - v0, e2 = t.position(t.i2[i]) - v0;
+        const glm::vec3 row[] = {v0, e1, e2, glm::cross(e1, e2)};
         std::memcpy(out, row, sizeof row);
     }
 }

@@ -23,8 +23,8 @@ struct BvhPrimitives {
     uint32_t rows() const { return test == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows; }
     void resize(std::size_t primitives) { blocks.resize(primitives * rows()); }
     // Writes the block of the leaf whose primitives, scene ids ids[0 .. count), start at index
-    // `first`; all of one kind. Read straight from the scene's arrays: a copy of every
-    // primitive's rows in id order would gather faster, but would be one more copy of the
+    // `first`; all of one kind. Read straight from the scene's indexed triangles: a copy of
+    // every primitive's rows in id order would gather faster, but would be one more copy of the
     // geometry alive at the build's peak of memory.
     void fill_leaf(const TriangleSoA& triangles, const SphereSoA& spheres, uint32_t first, const uint32_t* ids, uint32_t count);
     std::size_t bytes() const { return blocks.size() * sizeof(float); }

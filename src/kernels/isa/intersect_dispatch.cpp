@@ -3,8 +3,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "kernels/primitives/triangle_view.h"
-
 namespace wt {
 
 const char* isa_name(Isa isa) {
@@ -72,16 +70,23 @@ const IntersectKernels& intersect_kernels(Isa isa, const AccuracySettings& accur
     return kIntersectScalar[variant];
 }
 
-SceneView scene_view(const Scene& scene) {
-    const TriangleSoA& t = scene.triangles;
-    if (!t.serves(scene.settings.accuracy.triangles))
+namespace {
+const TriangleSoA& served_triangles(const Scene& scene) {
+    if (!scene.triangles.serves(scene.settings.accuracy.triangles))
         throw std::invalid_argument(std::string("intersect: the scene's triangles were stored for another triangle test than ") +
                                     name_of(scene.settings.accuracy.triangles) +
                                     "; build the scene with the accuracy settings it is rendered with");
-    const SphereSoA& s = scene.spheres;
+    return scene.triangles;
+}
+}  // namespace
+
+FlatScene::FlatScene(const Scene& scene) : triangles_(triangle_rows(served_triangles(scene))), spheres_(&scene.spheres) {}
+
+SceneView FlatScene::view() const {
+    const SphereSoA& s = *spheres_;
     SceneView v;
-    v.triangles = triangle_view(t);
-    v.spheres = {s.cx.data(), s.cy.data(), s.cz.data(), s.radius.data(), uint32_t(s.size()), uint32_t(t.size())};
+    v.triangles = triangle_view(triangles_);
+    v.spheres = {s.cx.data(), s.cy.data(), s.cz.data(), s.radius.data(), uint32_t(s.size()), triangles_.count};
     return v;
 }
 

@@ -46,10 +46,12 @@ void surface_points(const Scene& scene, const RayQueue& rays, const HitQueue& hi
         const vbool<N> triangle = found & (prim < triangle_count);  // found ids are below 2^31
         const vbool<N> sphere = found & ~triangle;
 
-        // Triangles: v0 + u e1 + v e2, triangle_point_error, TriangleSoA::normal.
-        const Lanes3<N> v0 = gather3<N>(triangle, t.v0x, t.v0y, t.v0z, prim);
-        const Lanes3<N> e1 = gather3<N>(triangle, t.e1x, t.e1y, t.e1z, prim);
-        const Lanes3<N> e2 = gather3<N>(triangle, t.e2x, t.e2y, t.e2z, prim);
+        // Triangles: v0 + u e1 + v e2 from the vertices, triangle_point_error, TriangleSoA::normal.
+        const auto corner = [&](const AlignedVector<uint32_t>& index) {
+            return gather3<N>(triangle, t.px, t.py, t.pz, vint<N>::gather(triangle, reinterpret_cast<const int32_t*>(index.data()), prim));
+        };
+        const Lanes3<N> v0 = corner(t.i0), v1 = corner(t.i1), v2 = corner(t.i2);
+        const Lanes3<N> e1{v1.x - v0.x, v1.y - v0.y, v1.z - v0.z}, e2{v2.x - v0.x, v2.y - v0.y, v2.z - v0.z};
         const vfloat<N> u = load(hits.u), v = load(hits.v);
         const Lanes3<N> ue1{u * e1.x, u * e1.y, u * e1.z}, ve2{v * e2.x, v * e2.y, v * e2.z};
         const Lanes3<N> triangle_position{v0.x + ue1.x + ve2.x, v0.y + ue1.y + ve2.y, v0.z + ue1.z + ve2.z};
