@@ -76,8 +76,8 @@ TEST(ShadingNormalStorage, OnlyScenesWithVertexNormalsStoreThem) {
     ball.normals = vertex_normals(ball, Normals::outward, 1);
     d.meshes.push_back(ball);
     const Scene smooth = build_scene(d);
-    EXPECT_EQ(smooth.shading_normals.size(), smooth.triangles.size());  // flat triangles marked, not skipped
-    EXPECT_EQ(smooth.shading_normals.smooth_count(), ball.triangles.size());
+    EXPECT_EQ(smooth.shading_normals.size(), smooth.triangles.vertex_count());  // flat vertices marked, not skipped
+    EXPECT_EQ(smooth.shading_normals.smooth_count(), ball.vertices.size());
     EXPECT_EQ(smooth.triangles.parallelogram_count, flat.triangles.parallelogram_count);
 }
 
@@ -96,23 +96,24 @@ TEST(ShadingNormalStorage, EachTriangleReadsItsOwnMeshsVertexNormalsOnce) {
     ASSERT_GT(before, 0u);
     // The cube's walls come first (as parallelograms or triangles), then the three meshes.
     const std::size_t added = outward.triangles.size() + flat.triangles.size() + random.triangles.size();
-    ASSERT_EQ(scene.shading_normals.size(), scene.triangles.size());
+    ASSERT_EQ(scene.shading_normals.size(), scene.triangles.vertex_count());
     std::size_t i = scene.triangles.size() - added;
     glm::vec3 n[3];
-    for (std::size_t k = 0; k < i; ++k) EXPECT_FALSE(scene.shading_normals.vertex_normals(k, n)) << "triangle " << k;
+    for (std::size_t k = 0; k < i; ++k) EXPECT_FALSE(scene.shading_normals.vertex_normals(scene.triangles, k, n)) << "triangle " << k;
     for (const TriangleMesh* mesh : {&outward, &flat, &random}) {
         for (const auto& tri : mesh->triangles) {
             const bool smooth = !mesh->normals.empty();
-            ASSERT_EQ(scene.shading_normals.vertex_normals(i, n), smooth) << "triangle " << i;
+            ASSERT_EQ(scene.shading_normals.vertex_normals(scene.triangles, i, n), smooth) << "triangle " << i;
             if (smooth) {
                 for (int c = 0; c < 3; ++c) EXPECT_EQ(n[c], mesh->normals[tri[c]]) << "triangle " << i << " corner " << c;
             }
             ++i;
         }
     }
-    // Each vertex normal once, and three indices per triangle.
-    EXPECT_EQ(scene.shading_normals.bytes(),
-              scene.shading_normals.size() * 3 * sizeof(uint32_t) + (outward.vertices.size() + random.vertices.size()) * sizeof(glm::vec3));
+    // One normal (or flat marker) per vertex, and nothing per triangle: the triangles' own
+    // vertex indices find them.
+    EXPECT_EQ(scene.shading_normals.bytes(), scene.triangles.vertex_count() * sizeof(glm::vec3));
+    EXPECT_EQ(scene.shading_normals.smooth_count(), outward.vertices.size() + random.vertices.size());
 }
 
 TEST(ShadingNormalStorage, AQuadWithVertexNormalsStaysTwoTriangles) {

@@ -1,20 +1,17 @@
 #include "core/geometry/shading_normals.h"
 
 #include <cmath>
-#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
 namespace wt {
 
-uint32_t ShadingNormalTable::add_vertex_normals(const std::vector<glm::vec3>& normals) {
-    // kFlat is the one index no normal may have.
-    if (normals.size() >= std::size_t(kFlat) - normals_.size())
-        throw std::length_error("shading normals: more than 2^32 - 1 vertex normals in one table");
-    const uint32_t first = uint32_t(normals_.size());
+void ShadingNormalTable::add_vertex_normals(const std::vector<glm::vec3>& normals) {
     normals_.insert(normals_.end(), normals.begin(), normals.end());
-    return first;
+    smooth_count_ += normals.size();
 }
+
+void ShadingNormalTable::add_flat_vertices(std::size_t count) { normals_.resize(normals_.size() + count, glm::vec3(NAN)); }
 
 glm::vec3 blend_normals(const glm::vec3& n0, const glm::vec3& n1, const glm::vec3& n2, float u, float v, const glm::vec3& geometric) {
     const glm::vec3 blended = (1.0f - u - v) * n0 + u * n1 + v * n2;
@@ -24,16 +21,28 @@ glm::vec3 blend_normals(const glm::vec3& n0, const glm::vec3& n1, const glm::vec
     return blended / std::sqrt(length2);
 }
 
-glm::vec3 ShadingNormalTable::at(std::size_t i, float u, float v, const glm::vec3& geometric) const {
-    const Corners& c = corners_[i];
-    if (c.n0 == kFlat) return geometric;
-    return blend_normals(normals_[c.n0], normals_[c.n1], normals_[c.n2], u, v, geometric);
+uint32_t add_mesh_vertices(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& vertex_normals, bool smooth,
+                           TriangleSoA& triangles, ShadingNormalTable& normals) {
+    const uint32_t first = triangles.add_vertices(positions);
+    if (smooth && vertex_normals.empty()) normals.add_flat_vertices(positions.size());
+    if (smooth && !vertex_normals.empty()) normals.add_vertex_normals(vertex_normals);
+    return first;
 }
 
-bool ShadingNormalTable::vertex_normals(std::size_t i, glm::vec3 out[3]) const {
-    const Corners& c = corners_[i];
-    if (c.n0 == kFlat) return false;
-    out[0] = normals_[c.n0], out[1] = normals_[c.n1], out[2] = normals_[c.n2];
+namespace {
+bool is_flat(const glm::vec3& n) { return std::isnan(n.x); }
+}  // namespace
+
+glm::vec3 ShadingNormalTable::at(const TriangleSoA& t, std::size_t i, float u, float v, const glm::vec3& geometric) const {
+    const glm::vec3& n0 = normals_[t.i0[i]];
+    if (is_flat(n0)) return geometric;
+    return blend_normals(n0, normals_[t.i1[i]], normals_[t.i2[i]], u, v, geometric);
+}
+
+bool ShadingNormalTable::vertex_normals(const TriangleSoA& t, std::size_t i, glm::vec3 out[3]) const {
+    const glm::vec3& n0 = normals_[t.i0[i]];
+    if (is_flat(n0)) return false;
+    out[0] = n0, out[1] = normals_[t.i1[i]], out[2] = normals_[t.i2[i]];
     return true;
 }
 

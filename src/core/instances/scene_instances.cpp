@@ -54,15 +54,10 @@ void build_instances(const SceneDescription& d, uint32_t first_id, SceneInstance
             if (d.materials[part.material].is_emissive())
                 throw std::invalid_argument("build_scene: mesh \"" + proto.name +
                                             "\" emits light; the light table holds the scene's own triangles only");
-            const bool has_normals = smooth && !part.normals.empty() && !part.triangles.empty();
-            const uint32_t normal_base = has_normals ? mesh.shading_normals.add_vertex_normals(part.normals) : 0;
-            const uint32_t first = mesh.triangles.add_vertices(part.vertices);
+            const uint32_t first = add_mesh_vertices(part.vertices, part.normals, smooth, mesh.triangles, mesh.shading_normals);
             for (const auto& tri : part.triangles) {
                 mesh.triangles.push(first + tri[0], first + tri[1], first + tri[2], part.material);
                 if (textured) push_texture_coordinates(mesh.texture_coordinates, part, tri);
-                if (!smooth) continue;
-                if (!has_normals) mesh.shading_normals.push_flat();
-                else mesh.shading_normals.push(normal_base + tri[0], normal_base + tri[1], normal_base + tri[2]);
             }
         }
     }

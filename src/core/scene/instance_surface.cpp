@@ -30,7 +30,7 @@ SurfacePoint instance_surface_at(const Scene& scene, const Hit& hit) {
     s.shading_normal = s.normal;
     s.smooth = false;
     glm::vec3 vertex[3];
-    if (!mesh.shading_normals.empty() && mesh.shading_normals.vertex_normals(i, vertex)) {
+    if (!mesh.shading_normals.empty() && mesh.shading_normals.vertex_normals(t, i, vertex)) {
         // Each vertex normal placed and renormalised before the blend, as a flattened mesh's
         // are (place_mesh.h): under a non-uniform scale, blending first would weight them
         // differently.

@@ -133,22 +133,16 @@ Scene build_scene(const SceneDescription& description) {
         const TriangleMesh& mesh = description.meshes[k];
         check_vertex_attribute_counts(mesh, "mesh " + std::to_string(k) + " has");
         if (!as_parallelogram(mesh)) continue;
-        const uint32_t first = scene.triangles.add_vertices(mesh.vertices);
+        const uint32_t first = add_mesh_vertices(mesh.vertices, {}, smooth, scene.triangles, scene.shading_normals);
         scene.triangles.push_parallelogram(first, first + 1, first + 3, mesh.material);
-        if (smooth) scene.shading_normals.push_flat();
         if (textured) scene.texture_coordinates.push({}, {}, {}, 0.0f);
     }
     for (const TriangleMesh& mesh : description.meshes) {
         if (as_parallelogram(mesh)) continue;
-        const bool has_normals = smooth && !mesh.normals.empty() && !mesh.triangles.empty();
-        const uint32_t normal_base = has_normals ? scene.shading_normals.add_vertex_normals(mesh.normals) : 0;
-        const uint32_t first = scene.triangles.add_vertices(mesh.vertices);
+        const uint32_t first = add_mesh_vertices(mesh.vertices, mesh.normals, smooth, scene.triangles, scene.shading_normals);
         for (const auto& tri : mesh.triangles) {
             scene.triangles.push(first + tri[0], first + tri[1], first + tri[2], mesh.material);
             if (textured) push_texture_coordinates(scene.texture_coordinates, mesh, tri);
-            if (!smooth) continue;
-            if (!has_normals) scene.shading_normals.push_flat();
-            else scene.shading_normals.push(normal_base + tri[0], normal_base + tri[1], normal_base + tri[2]);
         }
     }
     for (const Sphere& sphere : description.spheres) {

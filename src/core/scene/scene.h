@@ -123,7 +123,7 @@ SurfacePoint instance_surface_at(const Scene& scene, const Hit& hit);
         s.shading_normal = s.normal;
         s.smooth = false;
         if (!scene.shading_normals.empty()) {
-            s.shading_normal = scene.shading_normals.at(hit.prim, hit.u, hit.v, s.normal);
+            s.shading_normal = scene.shading_normals.at(t, hit.prim, hit.u, hit.v, s.normal);
             s.smooth = s.shading_normal != s.normal;
         }
         s.material = t.material[hit.prim];
