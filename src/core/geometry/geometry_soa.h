@@ -70,6 +70,15 @@ struct TriangleSoA {
     void push_back(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, uint32_t material_id);
     void push_parallelogram(const glm::vec3& a, const glm::vec3& b, const glm::vec3& d, uint32_t material_id);
 
+    // Triangle i's first vertex and edges, read once: a caller that then writes floats through a
+    // pointer (a returned struct) would otherwise have them read again after every store.
+    struct Corner {
+        glm::vec3 v0, e1, e2;
+    };
+    Corner corner(std::size_t i) const {
+        const glm::vec3 v0 = position(i0[i]);
+        return {v0, position(i1[i]) - v0, position(i2[i]) - v0};
+    }
     glm::vec3 position(uint32_t v) const { return {px[v], py[v], pz[v]}; }
     glm::vec3 vertex0(std::size_t i) const { return position(i0[i]); }
     glm::vec3 edge1(std::size_t i) const { return position(i1[i]) - vertex0(i); }
@@ -80,13 +89,14 @@ struct TriangleSoA {
     glm::vec3 vertex2(std::size_t i) const { return keeps_vertices_ ? position(i2[i]) : vertex0(i) + edge2(i); }
     glm::vec3 scaled_normal(std::size_t i) const { return glm::cross(edge1(i), edge2(i)); }
     // The unit geometric normal; 0 for a sliver.
-    glm::vec3 normal(std::size_t i) const { return unit_normal(glm::cross(edge1(i), edge2(i))); }
-
-private:
-    static glm::vec3 unit_normal(const glm::vec3& cross) {
+    glm::vec3 normal(std::size_t i) const { return unit_normal(edge1(i), edge2(i)); }
+    static glm::vec3 unit_normal(const glm::vec3& e1, const glm::vec3& e2) {
+        const glm::vec3 cross = glm::cross(e1, e2);
         const float length = glm::length(cross);
         return length > 0.0f ? cross / length : glm::vec3(0.0f);
     }
+
+private:
     bool keeps_vertices_ = true, keeps_scaled_normal_ = true;
 };
 

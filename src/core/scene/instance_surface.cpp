@@ -14,8 +14,9 @@ SurfacePoint instance_surface_at(const Scene& scene, const Hit& hit) {
     const uint32_t i = hit.prim - k.first_id;
     SurfacePoint s;
     // In object space first, as a flat triangle's (scene.h), then placed.
-    const glm::vec3 local = t.vertex0(i) + hit.u * t.edge1(i) + hit.v * t.edge2(i);
-    glm::vec3 local_error = triangle_point_error(t.vertex0(i), t.edge1(i), t.edge2(i), hit.u, hit.v);
+    const TriangleSoA::Corner c = t.corner(i);
+    const glm::vec3 local = c.v0 + hit.u * c.e1 + hit.v * c.e2;
+    glm::vec3 local_error = triangle_point_error(c.v0, c.e1, c.e2, hit.u, hit.v);
     if (scene.settings.accuracy.triangles == TriangleTest::watertight) local_error = with_watertight_floor(local_error);
     s.position = k.to_world.point(local);
     // The placement's rounding (pbrt-v4's transformed-point bound), and the rounding the inverse
@@ -25,7 +26,7 @@ SurfacePoint instance_surface_at(const Scene& scene, const Hit& hit) {
     s.error = k.to_world.point_error(local, local_error) + (1.0f + rounding_gamma(3)) * k.to_world.magnitude_times(back_error);
     // Normals by the inverse transpose. A mirroring placement needs no sign: its world
     // triangles are wound the other way round (place_mesh.h), so the normal keeps its side.
-    const glm::vec3 local_normal = t.normal(i);
+    const glm::vec3 local_normal = TriangleSoA::unit_normal(c.e1, c.e2);
     s.normal = glm::normalize(k.to_object.transposed_vector(local_normal));
     s.shading_normal = s.normal;
     s.smooth = false;

@@ -116,10 +116,11 @@ SurfacePoint instance_surface_at(const Scene& scene, const Hit& hit);
         const TriangleSoA& t = scene.triangles;
         // From barycentrics rather than o + t*d: its error does not grow with the hit distance,
         // which is what the ulp-based ray offset assumes.
-        s.position = t.vertex0(hit.prim) + hit.u * t.edge1(hit.prim) + hit.v * t.edge2(hit.prim);
-        s.error = triangle_point_error(t.vertex0(hit.prim), t.edge1(hit.prim), t.edge2(hit.prim), hit.u, hit.v);
+        const TriangleSoA::Corner c = t.corner(hit.prim);
+        s.position = c.v0 + hit.u * c.e1 + hit.v * c.e2;
+        s.error = triangle_point_error(c.v0, c.e1, c.e2, hit.u, hit.v);
         if (scene.settings.accuracy.triangles == TriangleTest::watertight) s.error = with_watertight_floor(s.error);
-        s.normal = t.normal(hit.prim);
+        s.normal = TriangleSoA::unit_normal(c.e1, c.e2);
         s.shading_normal = s.normal;
         s.smooth = false;
         if (!scene.shading_normals.empty()) {

@@ -35,7 +35,7 @@ PrimRef triangle_ref(const TriangleSoA& t, std::size_t i) {
     // The corners as the tests see them: v0 + u e1 + v e2 over the triangle or the unit
     // square, and the vertices the watertight test reads.
     Box box;
-    const glm::vec3 v0 = t.vertex0(i), e1 = t.edge1(i), e2 = t.edge2(i);
+    const auto [v0, e1, e2] = t.corner(i);
     box.extend_point(v0), box.extend_point(t.has_vertices() ? t.position(t.i1[i]) : v0 + e1);
     box.extend_point(t.has_vertices() ? t.position(t.i2[i]) : v0 + e2);
     box.extend_point(v0 + e1), box.extend_point(v0 + e2);

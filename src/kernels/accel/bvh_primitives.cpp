@@ -23,8 +23,8 @@ void primitive_rows(const TriangleSoA& t, const SphereSoA& s, TriangleTest test,
         const glm::vec3 row[] = {t.vertex0(i), t.vertex1(i), t.vertex2(i)};
         std::memcpy(out, row, sizeof row);
     } else {
-        const glm::vec3 v0 = t.vertex0(i), e1 = t.position(t.i1[i]) - v0, e2 = t.position(t.i2[i]) - v0;
-        const glm::vec3 row[] = {v0, e1, e2, glm::cross(e1, e2)};
+        const TriangleSoA::Corner c = t.corner(i);
+        const glm::vec3 row[] = {c.v0, c.e1, c.e2, glm::cross(c.e1, c.e2)};
         std::memcpy(out, row, sizeof row);
     }
 }
