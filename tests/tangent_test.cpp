@@ -222,13 +222,15 @@ TEST_F(TangentImport, MadeWhereTheFileHasNoneAndTheSameBitsAsTheFilesOwn) {
     const test::RenderedFilm rendered = test::render_film(made, Integrator::wavefront);
     EXPECT_TRUE(rendered.film == test::render_film(given, Integrator::wavefront).film);
     EXPECT_EQ(rendered.result.counts.nonfinite_samples, 0u);
-    // The tangents are stored beside the coordinates, and the memory estimate counts them.
+    // The tangents are stored beside the coordinates, one per vertex, and the memory estimate
+    // counts them.
     SceneDescription untangented = made;
     untangented.meshes[0].tangents.clear();
     const Scene with = build_scene(made), without = build_scene(untangented);
-    EXPECT_EQ(with.texture_coordinates.bytes(), without.texture_coordinates.bytes() + 2 * 3 * sizeof(glm::vec4));
+    ASSERT_EQ(with.triangles.vertex_count(), 4u);
+    EXPECT_EQ(with.texture_coordinates.bytes(), without.texture_coordinates.bytes() + 4 * sizeof(glm::vec4));
     EXPECT_EQ(estimate_render_memory(with, RenderOptions{}).textures - estimate_render_memory(without, RenderOptions{}).textures,
-              double(2 * 3 * sizeof(glm::vec4)));
+              double(4 * sizeof(glm::vec4)));
     // And the normal map leans the normal towards +x, dP/du, and +y, -dP/dv.
     const glm::vec3 n = mapped_normal(build_scene(made), 0);
     EXPECT_NEAR(n.x, 0.48f, 1e-5f);

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/textures/srgb.h"
-#include "core/textures/texture_coordinates.h"
+#include "core/geometry/texture_coordinates.h"
 #include "core/textures/texture_lookup.h"
 #include "texture_test_images.h"
 
@@ -166,15 +166,36 @@ TEST(TextureLookup, TransformIsTranslateRotateScale) {
 }
 
 TEST(TextureCoordinates, InterpolatedAndTheirDensity) {
+    // A right triangle of area 2 in the world mapped onto half the unit square (uv area 0.5),
+    // and one of a mesh without coordinates, indexed as the triangles' positions are.
+    TriangleSoA triangles;
     TextureCoordinateTable table;
-    // A right triangle of area 2 in the world mapped onto half the unit square (uv area 0.5).
-    table.push({0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}, 2.0f);
-    table.push({}, {}, {}, 1.0f);
-    const glm::vec2 uv = table.at(0, 0.25f, 0.5f);
+    const float s = 2.0f;
+    const uint32_t first = triangles.add_vertices({{0, 0, 0}, {s, 0, 0}, {0, s, 0}});
+    table.add_vertices(3, {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}}, {}, {});
+    triangles.push(first, first + 1, first + 2, 0);
+    table.push_triangle({first, first + 1, first + 2}, 2.0f);
+    const uint32_t second = triangles.add_vertices({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}});
+    table.add_vertices(3, {}, {}, {});
+    triangles.push(second, second + 2, second + 1, 0);
+    table.push_triangle({second, second + 2, second + 1}, 0.5f);
+    ASSERT_EQ(table.size(), 2u);
+    const glm::vec2 uv = table.at(triangles, 0, 0.25f, 0.5f);
     EXPECT_FLOAT_EQ(uv.x, 0.25f);
     EXPECT_FLOAT_EQ(uv.y, 0.5f);
     EXPECT_FLOAT_EQ(table.log2_density(0), 0.5f * std::log2(0.25f));
+    EXPECT_EQ(table.at(triangles, 1, 0.25f, 0.5f), glm::vec2(0.0f));
     EXPECT_EQ(table.log2_density(1), -INFINITY);  // no coordinates: level 0
+    // Neither set 1 nor vertex tangents were given: none is stored, and they read as absent.
+    EXPECT_EQ(table.at(triangles, 0, 0.25f, 0.5f, 1), glm::vec2(0.0f));
+    EXPECT_EQ(table.log2_density(0, 1), -INFINITY);
+    EXPECT_FALSE(table.vertex_tangents(triangles, 0));
+    EXPECT_EQ(table.bytes(), 6 * sizeof(glm::vec2) + 2 * sizeof(float));
+    // The tangent frame solved from the edges and coordinates: dP/du = +x s, -dP/dv = -y s.
+    const TextureCoordinateTable::TangentFrame f = table.tangent_frame(triangles, 0);
+    EXPECT_EQ(f.tangent, glm::vec3(s, 0, 0));
+    EXPECT_EQ(f.bitangent, glm::vec3(0, -s, 0));
+    EXPECT_EQ(table.tangent_frame(triangles, 1).tangent, glm::vec3(0.0f));  // no coordinates: no frame
 }
 
 }  // namespace

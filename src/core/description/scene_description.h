@@ -64,7 +64,7 @@ struct Material {
     int32_t metallic_roughness_texture = -1;
     // A tangent-space normal map (glTF's normalTexture, linear data): RGB 2 c - 1 is the normal
     // about the mesh's vertex tangents (TriangleMesh::tangents) where it has them, else the
-    // triangle's tangent frame (core/textures/texture_coordinates.h), x and y times
+    // triangle's tangent frame (core/geometry/texture_coordinates.h), x and y times
     // normal_scale; it replaces the shading normal. Triangles with texture coordinates only.
     int32_t normal_texture = -1;
     float normal_scale = 1.0f;

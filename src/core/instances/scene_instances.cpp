@@ -55,9 +55,10 @@ void build_instances(const SceneDescription& d, uint32_t first_id, SceneInstance
                 throw std::invalid_argument("build_scene: mesh \"" + proto.name +
                                             "\" emits light; the light table holds the scene's own triangles only");
             const uint32_t first = add_mesh_vertices(part.vertices, part.normals, smooth, mesh.triangles, mesh.shading_normals);
+            if (textured) add_texture_vertices(mesh.texture_coordinates, part);
             for (const auto& tri : part.triangles) {
                 mesh.triangles.push(first + tri[0], first + tri[1], first + tri[2], part.material);
-                if (textured) push_texture_coordinates(mesh.texture_coordinates, part, tri);
+                if (textured) push_texture_triangle(mesh.texture_coordinates, part, first, tri);
             }
         }
     }

@@ -13,7 +13,7 @@
 #include "core/geometry/geometry_soa.h"
 #include "core/instances/affine_transform.h"
 #include "core/geometry/shading_normals.h"
-#include "core/textures/texture_coordinates.h"
+#include "core/geometry/texture_coordinates.h"
 
 namespace wt {
 

@@ -6,8 +6,8 @@
 
 namespace wt {
 
-void EmissionTextures::push(int32_t texture, uint32_t triangle, const TextureCoordinateTable& coordinates,
-                            const std::vector<MipPyramid>& textures) {
+void EmissionTextures::push(int32_t texture, const TriangleSoA& triangles, uint32_t triangle,
+                            const TextureCoordinateTable& coordinates, const std::vector<MipPyramid>& textures) {
     const std::size_t k = pushed_++;
     if (texture < 0 && rows_.empty()) return;
     rows_.resize(k + 1);  // the untextured emitters before the first textured one get empty rows
@@ -18,8 +18,8 @@ void EmissionTextures::push(int32_t texture, uint32_t triangle, const TextureCoo
     // interpolates them with a hit's arithmetic.
     const int set = textures[std::size_t(texture)].coordinate_set();
     if (triangle < coordinates.size())
-        row.uv0 = coordinates.at(triangle, 0.0f, 0.0f, set), row.uv1 = coordinates.at(triangle, 1.0f, 0.0f, set),
-        row.uv2 = coordinates.at(triangle, 0.0f, 1.0f, set);
+        row.uv0 = coordinates.at(triangles, triangle, 0.0f, 0.0f, set), row.uv1 = coordinates.at(triangles, triangle, 1.0f, 0.0f, set),
+        row.uv2 = coordinates.at(triangles, triangle, 0.0f, 1.0f, set);
     const auto known = std::find(scene_texture_.begin(), scene_texture_.end(), texture);
     if (known != scene_texture_.end()) {
         row.texture = int32_t(known - scene_texture_.begin());

@@ -15,7 +15,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/textures/mip_pyramid.h"
-#include "core/textures/texture_coordinates.h"
+#include "core/geometry/texture_coordinates.h"
 
 namespace wt {
 
@@ -24,7 +24,7 @@ public:
     bool empty() const { return rows_.empty(); }
     // Emitter k of the table (pushed in its order, every emitter once) is scene triangle
     // `triangle`, textured by `texture` (an index into `textures`), or untextured (-1).
-    void push(int32_t texture, uint32_t triangle, const TextureCoordinateTable& coordinates,
+    void push(int32_t texture, const TriangleSoA& triangles, uint32_t triangle, const TextureCoordinateTable& coordinates,
               const std::vector<MipPyramid>& textures);
 
     bool textured(std::size_t k) const { return k < rows_.size() && rows_[k].texture >= 0; }

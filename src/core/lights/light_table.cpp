@@ -19,7 +19,7 @@ LightTable::LightTable(const TriangleSoA& triangles, const std::vector<Material>
         running_area += area;
         cumulative.push_back(running_area);
         const glm::vec3 v0 = triangles.vertex0(i), e1 = triangles.edge1(i), e2 = triangles.edge2(i);
-        emission_textures_.push(m.emission_texture, i, coordinates, textures);
+        emission_textures_.push(m.emission_texture, triangles, i, coordinates, textures);
         emitters_.push_back({v0, e1, e2, triangles.normal(i), m.emission, 0.0f, magnitude(v0), magnitude(e1), magnitude(e2),
                              parallelogram, emission_textures_.textured(emitters_.size())});
         triangles_.push_back(i);

@@ -33,7 +33,7 @@ bool alpha_keeps_hit(const void* context, uint32_t prim, float u, float v, uint6
     float alpha = m.alpha_factor;
     if (m.alpha_texture >= 0 && row < coordinates->size()) {
         const MipPyramid& t = scene.textures[std::size_t(m.alpha_texture)];
-        alpha *= texture_lookup(t, t.transformed(coordinates->at(row, u, v, t.coordinate_set())), -INFINITY).w;
+        alpha *= texture_lookup(t, t.transformed(coordinates->at(*triangles, row, u, v, t.coordinate_set())), -INFINITY).w;
     }
     if (m.alpha_mode == AlphaMode::mask) return !(alpha < m.alpha_cutoff);
     return blend_coin(ray_key, prim) < alpha;

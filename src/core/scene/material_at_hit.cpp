@@ -47,6 +47,7 @@ void apply_normal_map(const glm::vec3& t, const glm::vec3& b_triangle, const glm
 // space. Spheres have none (`table` null).
 struct CoordinateRow {
     const TextureCoordinateTable* table = nullptr;
+    const TriangleSoA* triangles = nullptr;  // whose vertex indices find the row's coordinates
     std::size_t row = 0;
     const Instance* instance = nullptr;
     const InstancedMesh* mesh = nullptr;
@@ -55,11 +56,11 @@ struct CoordinateRow {
 CoordinateRow coordinate_row(const Scene& scene, const Hit& hit) {
     CoordinateRow c;
     if (hit.prim < scene.triangles.size()) {
-        c.table = &scene.texture_coordinates, c.row = hit.prim;
+        c.table = &scene.texture_coordinates, c.triangles = &scene.triangles, c.row = hit.prim;
     } else if (!scene.instances.empty() && hit.prim >= scene.instances.first_id) {
         c.instance = &scene.instances.instance_of(hit.prim);
         c.mesh = &scene.instances.meshes[c.instance->mesh];
-        c.table = &c.mesh->texture_coordinates, c.row = hit.prim - c.instance->first_id;
+        c.table = &c.mesh->texture_coordinates, c.triangles = &c.mesh->triangles, c.row = hit.prim - c.instance->first_id;
     }
     if (c.table && c.row >= c.table->size()) c.table = nullptr;
     return c;
@@ -88,7 +89,7 @@ float mirror_sign(const AffineTransform& a) {
 void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, const Ray& ray, bool from_camera,
                     Material& textured) {
     const CoordinateRow row = coordinate_row(scene, hit);
-    const glm::vec2 uv = row.table ? row.table->at(row.row, hit.u, hit.v) : sphere_coordinates(surface.normal);
+    const glm::vec2 uv = row.table ? row.table->at(*row.triangles, row.row, hit.u, hit.v) : sphere_coordinates(surface.normal);
     // Level of detail of a ray cone (Akenine-Moller et al. 2019, eq. 34): the triangle's texel
     // density plus log2 of the cone's width over the cosine of its incidence, plus the
     // texture's own term (added per texture below). Spheres and non-camera rays read level 0.
@@ -103,7 +104,7 @@ void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, c
         const MipPyramid& t = scene.textures[std::size_t(texture)];
         const int set = row.table ? t.coordinate_set() : 0;
         const float lod = cone == -INFINITY ? -INFINITY : log2_density(row, set) + cone;
-        return texture_lookup(t, t.transformed(set == 0 ? uv : row.table->at(row.row, hit.u, hit.v, set)), lod + t.log2_texel_scale());
+        return texture_lookup(t, t.transformed(set == 0 ? uv : row.table->at(*row.triangles, row.row, hit.u, hit.v, set)), lod + t.log2_texel_scale());
     };
     if (textured.color_texture >= 0) {
         const glm::vec4 c = lookup(textured.color_texture);
@@ -116,8 +117,9 @@ void apply_textures(const Scene& scene, const Hit& hit, SurfacePoint& surface, c
     }
     if (textured.normal_texture >= 0 && row.table) {
         // An instanced triangle's tangents are in object space; tangents move with the placement.
-        glm::vec3 t = row.table->tangent(row.row), b = row.table->bitangent(row.row);
-        if (const std::array<glm::vec4, 3>* vertex = row.table->vertex_tangents(row.row)) {
+        const TextureCoordinateTable::TangentFrame frame = row.table->tangent_frame(*row.triangles, row.row);
+        glm::vec3 t = frame.tangent, b = frame.bitangent;
+        if (const std::optional<std::array<glm::vec4, 3>> vertex = row.table->vertex_tangents(*row.triangles, row.row)) {
             // The file's or MikkTSpace's, interpolated like the normals (glTF 2.0, 3.7.2.1), the
             // bitangent cross(N, t) w. An instance places each vertex's and renormalises it, as
             // a flattened copy's are placed (a non-uniform scale changes their lengths unequally);

@@ -135,14 +135,18 @@ Scene build_scene(const SceneDescription& description) {
         if (!as_parallelogram(mesh)) continue;
         const uint32_t first = add_mesh_vertices(mesh.vertices, {}, smooth, scene.triangles, scene.shading_normals);
         scene.triangles.push_parallelogram(first, first + 1, first + 3, mesh.material);
-        if (textured) scene.texture_coordinates.push({}, {}, {}, 0.0f);
+        if (textured) {
+            scene.texture_coordinates.add_vertices(mesh.vertices.size(), {}, {}, {});
+            scene.texture_coordinates.push_triangle({first, first + 1, first + 3}, 0.0f);
+        }
     }
     for (const TriangleMesh& mesh : description.meshes) {
         if (as_parallelogram(mesh)) continue;
         const uint32_t first = add_mesh_vertices(mesh.vertices, mesh.normals, smooth, scene.triangles, scene.shading_normals);
+        if (textured) add_texture_vertices(scene.texture_coordinates, mesh);
         for (const auto& tri : mesh.triangles) {
             scene.triangles.push(first + tri[0], first + tri[1], first + tri[2], mesh.material);
-            if (textured) push_texture_coordinates(scene.texture_coordinates, mesh, tri);
+            if (textured) push_texture_triangle(scene.texture_coordinates, mesh, first, tri);
         }
     }
     for (const Sphere& sphere : description.spheres) {

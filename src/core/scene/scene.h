@@ -20,7 +20,7 @@
 #include "core/description/scene_description.h"
 #include "core/geometry/shading_normals.h"
 #include "core/textures/mip_pyramid.h"
-#include "core/textures/texture_coordinates.h"
+#include "core/geometry/texture_coordinates.h"
 
 namespace wt {
 
