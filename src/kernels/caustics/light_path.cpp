@@ -62,7 +62,8 @@ LightPathTracer::LightPathTracer(const Scene& scene, const BvhView* bvh, bool re
       bvh_(bvh),
       records_photons_(records_photons),
       starts_at_area_lights_only_(scene.listed_lights.empty()),
-      inverse_path_count_(float(1.0 / double(light_paths_per_sample(scene.settings)))) {}
+      inverse_path_count_(float(1.0 / double(light_paths_per_sample(scene.settings)))),
+      specular_targets_(SpecularTargets::of(scene)) {}
 
 Hit LightPathTracer::closest(const Ray& ray) const {
     return bvh_ ? bvh_intersect_closest(*bvh_, scene_.settings.accuracy, ray) : intersect_closest(scene_, ray);
@@ -167,6 +168,7 @@ void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, 
     const uint64_t key = light_path_key(scene_.settings.seed, index, sample);
     std::optional<LightRay> ray = starts_at_area_lights_only_ ? start(key) : start_at_listed_lights(key);
     ++counts.light_paths;
+    if (ray && !record && !first_ray_counts(ray->ray)) return;  // a record lists the vertex that ends it too
     std::optional<Material> textured;
     for (uint32_t vertex = 1; ray; ++vertex) {
         ++counts.light_rays;

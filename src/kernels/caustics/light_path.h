@@ -19,6 +19,7 @@
 #include "core/sampling/rng.h"
 #include "core/scene/scene.h"
 #include "kernels/accel/bvh_view.h"
+#include "kernels/caustics/specular_targets.h"
 #include "kernels/photons/photon.h"
 #include "kernels/work/render_stats.h"
 
@@ -90,6 +91,10 @@ public:
     bool starts_at_area_lights_only() const { return starts_at_area_lights_only_; }
     std::optional<LightRay> start(uint64_t key) const;
     std::optional<LightRay> start_at_listed_lights(uint64_t key) const;
+    // Whether a path's first ray can add anything: false where it misses every specular
+    // primitive (specular_targets.h), so its first hit would end it. The image is the same
+    // whether such a ray is traced or not.
+    bool first_ray_counts(const Ray& ray) const { return !specular_targets_ || specular_targets_->may_hit(ray); }
     // What the path does at the surface `hit` of `at`, its `vertex`-th (1 for the first hit).
     // `textured`: scratch for the hit's material with its textures looked up (material_at_hit.h),
     // the caller's, so that a loop over vertices constructs it once.
@@ -120,6 +125,7 @@ private:
     bool records_photons_;
     bool starts_at_area_lights_only_;
     float inverse_path_count_;
+    std::optional<SpecularTargets> specular_targets_;  // none: every first ray is traced
 };
 
 }  // namespace wt

@@ -62,7 +62,8 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, uin
         for (uint64_t index = first; index < end; ++index) {
             const uint32_t slot = uint32_t(index - first);
             ws.key[slot] = light_path_key(scene_.settings.seed, index, sample);
-            if (const auto r = start(ws.key[slot])) {
+            const auto r = start(ws.key[slot]);
+            if (r && tracer_.first_ray_counts(r->ray)) {
                 ws.power_r[slot] = r->power.x, ws.power_g[slot] = r->power.y, ws.power_b[slot] = r->power.z;
                 ws.rays.push(r->ray, r->weight, slot, 0);
             }
