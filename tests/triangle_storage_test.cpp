@@ -144,6 +144,21 @@ TEST(TriangleStorage, RowsCopyTheLeadingEntriesBitForBit) {
     }
 }
 
+// Vertices added a few at a time (a triangle or a small mesh per call) grow the arrays
+// geometrically: reserving exactly what each call adds reallocated on every call, which made a
+// scene of many small meshes quadratic to build.
+TEST(TriangleStorage, VerticesAddedAFewAtATimeReallocateLogarithmicallyOften) {
+    TriangleSoA t;
+    std::size_t reallocations = 0, capacity = t.px.capacity();
+    for (int i = 0; i < 10000; ++i) {
+        t.push_back({float(i), 0, 0}, {float(i) + 1, 0, 0}, {float(i), 1, 0}, 0);
+        if (t.px.capacity() != capacity) ++reallocations, capacity = t.px.capacity();
+    }
+    EXPECT_EQ(t.vertex_count(), 30000u);
+    EXPECT_LE(reallocations, 40u);
+    EXPECT_GE(reallocations, 1u);
+}
+
 // A sliver is stored with all three indices on its first vertex, so its edges are exactly zero.
 TEST(TriangleStorage, ASliverCollapsesOntoItsFirstVertex) {
     TriangleSoA t;

@@ -19,7 +19,6 @@ uint32_t TriangleSoA::add_vertices(const std::vector<glm::vec3>& vertices) {
     if (vertices.size() > std::size_t(INT32_MAX) - vertex_count())
         throw std::length_error("TriangleSoA: more than 2^31 - 1 vertices in all");
     const uint32_t first = uint32_t(vertex_count());
-    px.reserve(px.size() + vertices.size()), py.reserve(py.size() + vertices.size()), pz.reserve(pz.size() + vertices.size());
     for (const glm::vec3& v : vertices) px.push_back(v.x), py.push_back(v.y), pz.push_back(v.z);
     return first;
 }
