@@ -231,6 +231,34 @@ TEST_F(TextureImport, BadImagesNameTheFileMaterialAndField) {
     EXPECT_EQ(load_from_file("whole.glb").textures.size(), 1u);
 }
 
+// An image's bufferView that runs past its buffer is refused naming the image, the view and the
+// buffer (tinygltf 2.7 hands the view's bytes over unchecked: fuzz_gltf read past the buffer's heap
+// block), by one byte as by 2^32; one that ends exactly at the buffer's end loads.
+TEST_F(TextureImport, ImageBufferViewPastItsBufferIsRefused) {
+    GltfFile file;
+    Json j = square(file, {}, half_black_png(8, 8));
+    const std::size_t view = j["images"][0]["bufferView"].get<std::size_t>();
+    const std::size_t offset = j["bufferViews"][view]["byteOffset"].get<std::size_t>();
+    const std::size_t length = j["bufferViews"][view]["byteLength"].get<std::size_t>();
+    ASSERT_EQ(offset + length, file.bin().size()) << "the image is the buffer's last view";
+    write("exact.glb", test::glb(j.dump(), file.bin()));
+    EXPECT_EQ(load_from_file("exact.glb").textures.size(), 1u);
+
+    const auto expect_refused = [&](std::size_t new_offset, std::size_t new_length) {
+        Json bad = j;
+        bad["bufferViews"][view]["byteOffset"] = new_offset;
+        bad["bufferViews"][view]["byteLength"] = new_length;
+        write("past.glb", test::glb(bad.dump(), file.bin()));
+        test::expect_mesh_error(texture_error("past.glb"), "past.glb",
+                                "image 0: bufferView " + std::to_string(view) + " (bytes " + std::to_string(new_offset) + " to " +
+                                    std::to_string(new_offset + new_length) + ") runs past the end of buffer 0 (" +
+                                    std::to_string(file.bin().size()) + " bytes)");
+    };
+    expect_refused(offset, length + 1);
+    expect_refused(offset + 4, length);
+    expect_refused(offset, length + (std::size_t(1) << 32));
+}
+
 // glTF's emissiveTexture (3.9.5) multiplies emissiveFactor and KHR_materials_emissive_strength:
 // the half-black, half-white image emits from its white half alone, exactly the factor there.
 // An image that cannot be read is an error naming the field; on glass (which cannot emit) and with

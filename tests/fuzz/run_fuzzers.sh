@@ -70,7 +70,15 @@ for target in "${targets[@]}"; do
   if [ "$(cat "$results/$target.status")" -ne 0 ]; then
     failed=1
     echo "run_fuzzers: $target FAILED; its log: $build_dir/fuzz-$target.log"
-    grep -E "ERROR|SUMMARY|Test unit written|==[0-9]+==" "$build_dir/fuzz-$target.log" | head -20
+    # The stack too: CI keeps only this output, and a SUMMARY line alone names no function.
+    grep -E "ERROR|SUMMARY|Test unit written|==[0-9]+==|^ +#[0-9]+ |READ of|WRITE of|allocated by|located" \
+      "$build_dir/fuzz-$target.log" | head -60
+    # The input itself, in base64, so it can be reproduced from CI's output alone.
+    for crash in "$artifacts/$target"-*; do
+      [ -f "$crash" ] || continue
+      echo "run_fuzzers: $crash ($(wc -c < "$crash") bytes), base64:"
+      head -c 16384 "$crash" | base64 -w 0; echo
+    done
   fi
 done
 exit "$failed"

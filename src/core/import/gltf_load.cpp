@@ -56,9 +56,10 @@ bool read_referenced_file(std::vector<unsigned char>* out, std::string* err, con
 
 tinygltf::Model load_gltf_model(const std::string& path) {
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(keep_encoded_image, nullptr);
-    loader.SetFsCallbacks({&referenced_file_exists, &tinygltf::ExpandFilePath, &read_referenced_file, &tinygltf::WriteWholeFile, nullptr});
     tinygltf::Model model;
+    // The loader checks an image's bufferView against the buffers already loaded into `model`.
+    loader.SetImageLoader(keep_encoded_image, &model);
+    loader.SetFsCallbacks({&referenced_file_exists, &tinygltf::ExpandFilePath, &read_referenced_file, &tinygltf::WriteWholeFile, nullptr});
     std::string err, warn;
     {
         // Unmapped before the accessors are read: the model holds its own copy of the buffers.

@@ -1,6 +1,8 @@
 #include "core/import/gltf_textures.h"
 
+#include <climits>
 #include <cmath>
+#include <cstdint>
 
 #include "core/image_io/image_error.h"
 #include "core/import/imported_mesh.h"
@@ -37,8 +39,24 @@ void read_transform(const tinygltf::Value& t, const std::string& context, Textur
 
 }  // namespace
 
-bool keep_encoded_image(tinygltf::Image* image, int, std::string*, std::string*, int, int, const unsigned char* bytes,
-                        int size, void*) {
+bool keep_encoded_image(tinygltf::Image* image, int index, std::string* err, std::string*, int, int, const unsigned char* bytes,
+                        int size, void* loading_model) {
+    // tinygltf has checked that the view and its buffer exist, not that the view's bytes are in
+    // the buffer: it passes &buffer.data[byteOffset] and byteLength as given (found by fuzz_gltf,
+    // a read past the buffer's heap block), and byteLength cast to int.
+    const auto* model = static_cast<const tinygltf::Model*>(loading_model);
+    if (image->bufferView >= 0 && model) {
+        const tinygltf::BufferView& view = model->bufferViews[std::size_t(image->bufferView)];
+        const std::size_t buffer_bytes = model->buffers[std::size_t(view.buffer)].data.size();
+        if (view.byteOffset > buffer_bytes || view.byteLength > buffer_bytes - view.byteOffset || view.byteLength > INT_MAX) {
+            if (err)
+                *err += "image " + std::to_string(index) + ": bufferView " + std::to_string(image->bufferView) + " (bytes " +
+                        std::to_string(view.byteOffset) + " to " + std::to_string(uint64_t(view.byteOffset) + view.byteLength) +
+                        ") runs past the end of buffer " + std::to_string(view.buffer) + " (" + std::to_string(buffer_bytes) +
+                        " bytes)\n";
+            return false;
+        }
+    }
     image->image.assign(bytes, bytes + (size > 0 ? size : 0));
     image->as_is = true;
     return true;

@@ -42,7 +42,10 @@ private:
 
 // tinygltf's image loader: keeps the encoded bytes in image->image for GltfTextures to decode
 // (only the images a material uses are, and through the image module like every other image).
+// `loading_model` is the tinygltf::Model being loaded: an image in a bufferView is refused (false,
+// the reason in `err`) unless the view lies within its buffer, which tinygltf 2.7 does not check
+// before it hands over the view's bytes.
 bool keep_encoded_image(tinygltf::Image* image, int index, std::string* err, std::string* warn, int, int,
-                        const unsigned char* bytes, int size, void*);
+                        const unsigned char* bytes, int size, void* loading_model);
 
 }  // namespace wt
