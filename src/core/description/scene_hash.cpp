@@ -85,6 +85,7 @@ uint64_t scene_content_hash(const SceneDescription& d) {
             h.word(p.parts.size());
             for (const TriangleMesh& mesh : p.parts) {
                 h.array(mesh.vertices), h.array(mesh.triangles), h.array(mesh.normals), h.value(mesh.material);
+                if (!mesh.uvs.empty()) h.array(mesh.uvs);
                 if (!mesh.tangents.empty()) h.array(mesh.tangents);
                 if (!mesh.second_uvs.empty()) h.array(mesh.second_uvs);
             }
