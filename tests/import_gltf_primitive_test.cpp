@@ -3,6 +3,8 @@
 // an error that says so. Files of another glTF version, or requiring an extension that stores
 // the geometry differently, are refused as such.
 
+#include <cstring>
+
 #include <glm/geometric.hpp>
 
 #include "import_gltf_files.h"
@@ -131,6 +133,39 @@ TEST_F(GltfPrimitives, GltfOneIsRefusedAsSuch) {
     binary[4] = 1;
     write("one.glb", binary);
     expect_mesh_error(error_for("one.glb"), "one.glb", message);
+}
+
+// A .glb whose BIN chunk claims more bytes than the file holds is refused naming the chunk, by
+// the 8 bytes of its own header that tinygltf leaves out of its bound (it would read them past
+// the mapped file) as by 4; the same file with the chunk's true length loads.
+TEST_F(GltfPrimitives, AGlbBinChunkPastTheFileIsRefused) {
+    GltfFile f;
+    f.primitive({{"attributes", {{"POSITION", f.positions(kFan)}}}, {"mode", 6}});
+    const std::string whole = f.glb_bytes();
+    write("whole.glb", whole);
+    EXPECT_EQ(load_file("whole.glb").meshes[0].triangles.size(), 3u);
+    uint32_t json_length = 0, bin_length = 0;
+    std::memcpy(&json_length, whole.data() + 12, 4);
+    const std::size_t bin_chunk = 20 + json_length;
+    std::memcpy(&bin_length, whole.data() + bin_chunk, 4);
+    ASSERT_EQ(bin_chunk + 8 + bin_length, whole.size());
+    for (uint32_t extra : {4u, 8u}) {
+        std::string claims_more = whole;
+        const uint32_t claimed = bin_length + extra;
+        std::memcpy(&claims_more[bin_chunk], &claimed, 4);
+        // The buffer asks for what the chunk claims, so only the chunk's bound stands in the way.
+        Json j = Json::parse(claims_more.substr(20, json_length));
+        j["buffers"][0]["byteLength"] = claimed;
+        std::string json = j.dump();
+        ASSERT_LE(json.size(), json_length) << "the JSON chunk keeps its length";
+        json.resize(json_length, ' ');
+        claims_more.replace(20, json_length, json);
+        write("past.glb", claims_more);
+        expect_mesh_error(error_for("past.glb"), "past.glb",
+                          "the BIN chunk at byte " + std::to_string(bin_chunk) + " claims " + std::to_string(claimed) +
+                              " bytes, which would end at byte " + std::to_string(bin_chunk + 8 + claimed) + ", past the " +
+                              std::to_string(whole.size()) + " bytes of the file");
+    }
 }
 
 TEST_F(GltfPrimitives, OtherVersionsAreRefusedAndTwoPointAnythingIsRead) {

@@ -68,7 +68,7 @@ tinygltf::Model load_gltf_model(const std::string& path) {
         const std::string base_dir = std::filesystem::path(path).parent_path().string();
         // The content decides, not the extension: a .glb starts with the magic "glTF".
         const bool binary = file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0;
-        if (binary) check_glb_container_version(path, file.data(), file.size());
+        if (binary) check_glb_container(path, file.data(), file.size());
         const bool ok =
             binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, file.data(), unsigned(file.size()), base_dir)
                    : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(file.data()),

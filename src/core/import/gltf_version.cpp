@@ -1,6 +1,8 @@
 #include "core/import/gltf_version.h"
 
+#include <cstdint>
 #include <cstring>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -29,11 +31,23 @@ void check_required(const std::string& path, const std::string& extension) {
 
 }  // namespace
 
-void check_glb_container_version(const std::string& path, const unsigned char* data, std::size_t size) {
+void check_glb_container(const std::string& path, const unsigned char* data, std::size_t size) {
     if (size < 8) return;  // tinygltf says what is wrong with so short a file
-    uint32_t version = 0;
-    std::memcpy(&version, data + 4, 4);
-    if (version == 1) fail(path, "glTF 1.0 is not supported (version 2.0 is)");
+    const auto word = [&](std::size_t at) {
+        uint32_t w = 0;
+        std::memcpy(&w, data + at, 4);
+        return w;
+    };
+    if (word(4) == 1) fail(path, "glTF 1.0 is not supported (version 2.0 is)");
+    // Header: magic, version, length; then chunks of (length, type, bytes), JSON first.
+    if (size < 20) return;
+    const uint64_t length = word(8), bin_chunk = 20 + uint64_t(word(12));
+    if (length > size || bin_chunk + 8 > length) return;  // tinygltf refuses these, or there is no BIN chunk
+    const uint64_t bin_end = bin_chunk + 8 + word(std::size_t(bin_chunk));
+    if (bin_end > length)
+        fail(path, "the BIN chunk at byte " + std::to_string(bin_chunk) + " claims " + std::to_string(word(std::size_t(bin_chunk))) +
+                       " bytes, which would end at byte " + std::to_string(bin_end) + ", past the " + std::to_string(length) +
+                       " bytes of the file");
 }
 
 void check_gltf_version_and_extensions(const std::string& path, const tinygltf::Model& model) {

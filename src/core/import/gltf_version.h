@@ -12,8 +12,11 @@
 
 namespace wt {
 
-// A .glb's header: version 1 is glTF 1.0's binary container (KHR_binary_glTF).
-void check_glb_container_version(const std::string& path, const unsigned char* data, std::size_t size);
+// A .glb's header and chunks, before tinygltf reads them: version 1 is glTF 1.0's binary
+// container (KHR_binary_glTF); a BIN chunk whose length runs past the file's is refused, since
+// tinygltf 2.7 bounds the chunk without its 8-byte header and would read up to 8 bytes past the
+// end of the mapped file (past its last page: a crash). What tinygltf refuses itself it refuses.
+void check_glb_container(const std::string& path, const unsigned char* data, std::size_t size);
 
 // After tinygltf has parsed the file: asset.version and extensionsRequired.
 void check_gltf_version_and_extensions(const std::string& path, const tinygltf::Model& model);
