@@ -60,10 +60,10 @@ void expect_bvh_matches_flat(const Scene& scene, const test::RayBatch& rays, con
     const Bvh bvh = build_bvh(scene, options);
     const IntersectKernels& k = intersect_kernels(isa, scene.settings.accuracy);
     const BvhView tree = bvh_view(bvh);
-    // The occlusion walk a tree past kBvhPrefetchBytes gets, on this small one (closest hits
-    // do not prefetch).
-    BvhView prefetching = tree;
-    prefetching.prefetch_pushed = true;
+    // The walks a tree past kBvhPrefetchBytes gets (several rays' walks interleaved, the
+    // occlusion walks prefetching what they push), on this small one.
+    BvhView interleaved = tree;
+    interleaved.prefetch_pushed = true;
     const std::size_t n = rays.size();
     struct Traversal {
         const char* name;
@@ -72,7 +72,7 @@ void expect_bvh_matches_flat(const Scene& scene, const test::RayBatch& rays, con
         const BvhView& tree;
     };
     for (const Traversal& traversal : {Traversal{"single rays", k.closest_bvh, k.any_bvh, tree},
-                                       Traversal{"single rays, prefetching", nullptr, k.any_bvh, prefetching},
+                                       Traversal{"interleaved walks", k.closest_bvh, k.any_bvh, interleaved},
                                        Traversal{"packets", k.closest_bvh_packets, k.any_bvh_packets, tree}}) {
         SCOPED_TRACE(traversal.name);
         for (int bounded = 0; bounded < 2; ++bounded) {
@@ -178,6 +178,37 @@ TEST(Bvh, CoherentShadowRaysEqualFlatKernels) {
     EXPECT_LT(blocked, rays.size() * 9 / 10) << "and leave runs unblocked";
     for (Isa isa : supported_isas())
         for (const BvhBuildOptions& o : build_variants()) expect_bvh_matches_flat(scene, rays, flat, isa, o, "coherent shadow rays");
+}
+
+// The interleaved walks (bvh_interleaved_traverse.h) start, retire and refill kInterleavedWalks
+// rays at a time: a queue shorter than that, one just past it, and the tail of a longer one
+// must each get every ray's answer, and write nothing past the queue's end.
+TEST(Bvh, InterleavedWalksAnswerQueuesOfEveryLength) {
+    const Scene scene = build_scene(test::hexroom_with_meshes(8, 8, 1));
+    const test::RayBatch rays = test::scene_rays(scene, 64, 13);
+    const FlatAnswers flat(scene, rays);
+    for (Isa isa : supported_isas()) {
+        const IntersectKernels& k = intersect_kernels(isa, scene.settings.accuracy);
+        const Bvh bvh = build_bvh(scene, {8, 8, 2});
+        BvhView interleaved = bvh_view(bvh);
+        interleaved.prefetch_pushed = true;
+        for (std::size_t first : {std::size_t(0), std::size_t(5)})
+            for (std::size_t count = 0; count <= 19; ++count) {
+                SCOPED_TRACE(std::string("isa ") + isa_name(isa) + ", rays " + std::to_string(first) + " + " + std::to_string(count));
+                test::HitArrays got(count + 1);
+                got.prim[count] = 12345;  // one past the queue: left alone
+                k.closest_bvh(interleaved, rays.view(true, first, count), got.view());
+                std::vector<uint8_t> occluded(count + 1, 9);
+                k.any_bvh(interleaved, rays.view(true, first, count), occluded.data());
+                for (std::size_t i = 0; i < count; ++i) {
+                    EXPECT_EQ(got.prim[i], flat.closest[1].prim[first + i]) << "ray " << i;
+                    EXPECT_EQ(got.t[i], flat.closest[1].t[first + i]) << "ray " << i;
+                    EXPECT_EQ(occluded[i], flat.any[1][first + i]) << "ray " << i;
+                }
+                EXPECT_EQ(got.prim[count], 12345u);
+                EXPECT_EQ(occluded[count], 9);
+            }
+    }
 }
 
 TEST(Bvh, AxisAlignedRaysWithZeroDirectionComponents) {

@@ -117,10 +117,12 @@ struct NoLeafPrefetch {
     void operator()(uint32_t) const {}
 };
 
-// The generic loop: one ray's walk of one tree (`tree_nodes`, from child reference `root`),
-// nearest child first for closest hits, test_leaf(ref) at each leaf it reaches, stopping when
-// the state says so. The flat tree's leaves are primitive blocks; the instances' top level's
-// leaves are instances, each of which walks its mesh's tree with this same loop.
+// One ray's walk of one tree (`tree_nodes`, from child reference `root`), a node visit or a
+// leaf test at a time: nearest child first for closest hits, test_leaf(ref) at each leaf it
+// reaches, over when the state says so. The flat tree's leaves are primitive blocks; the
+// instances' top level's leaves are instances, each of which walks its mesh's tree the same way.
+// traverse_tree takes the steps of one walk in a row (walk_step); bvh_interleaved_traverse.h
+// takes those of several walks in turn.
 //
 // Prefetch: an occlusion walk asks for the lines of each child it pushes (prefetch_leaf(ref)
 // for a leaf's block). Its stack is not sorted, and unless a blocker is found every entry is
@@ -128,67 +130,106 @@ struct NoLeafPrefetch {
 // entered children overlap. A closest-hit walk may skip its far entries, and does not ask.
 // A template argument, not a run-time flag: the walks of trees that fit in the caches stay
 // exactly as they were.
+// Where a walk stands: what it visits next (`ref`: an inner node, or a leaf) and the entries
+// it has left for later, with their entry distances.
+struct WalkStack {
+    uint32_t ref[kBvhStackSize];
+    float t[kBvhStackSize];
+};
+
+// Asks for the lines of `child`: all of an inner node's, or prefetch_leaf(child) for a leaf.
+template <int W, typename PrefetchLeaf>
+WT_KERNEL_INLINE void prefetch_ref(const BvhNode<W>* nodes, uint32_t child, PrefetchLeaf&& prefetch_leaf) {
+    if (!(child & kBvhLeafBit)) prefetch_node<W>(nodes, child);
+    else if (child != kBvhEmptyChild) prefetch_leaf(child);
+}
+
+// One step of a walk: visits `ref` and moves it to what comes next; false when the walk is
+// over. `ref` and `top` are the caller's, so a walk taken in one go keeps them in registers.
+template <Query Q, int W, int V, bool Prefetch, typename State, typename TestLeaf, typename PrefetchLeaf>
+WT_KERNEL_INLINE bool walk_step(const BvhNode<W>* nodes, uint32_t& ref, int& top, WalkStack& stack, const BoxRay<V>& box_ray,
+                                State& state, TestLeaf&& test_leaf, PrefetchLeaf&& prefetch_leaf) {
+    const auto prefetch = [&](uint32_t child) __attribute__((always_inline)) {
+        if constexpr (Q == Query::any && Prefetch) prefetch_ref<W>(nodes, child, prefetch_leaf);
+    };
+    if (!(ref & kBvhLeafBit)) {
+        const BvhNode<W>& node = nodes[ref];
+        alignas(64) float t_near[W];
+        uint32_t mask = enter_children<W, V>(node, box_ray, state.closest, t_near);
+        if (mask) {
+            int c = __builtin_ctz(mask);
+            mask &= mask - 1;
+            if (!mask) {  // one child entered: no stack traffic
+                ref = node.child[c];
+                return true;
+            }
+            const int second = __builtin_ctz(mask);
+            if (!(mask & (mask - 1))) {  // two: go to the nearer, keep the farther
+                const bool first_nearer = !(t_near[second] < t_near[c]);
+                const int near = first_nearer ? c : second, far = first_nearer ? second : c;
+                stack.ref[top] = node.child[far], stack.t[top] = t_near[far], ++top;
+                prefetch(node.child[far]);
+                ref = node.child[near];
+                return true;
+            }
+            const int base = top;
+            stack.ref[top] = node.child[c], stack.t[top] = t_near[c], ++top;
+            prefetch(node.child[c]);
+            for (; mask; mask &= mask - 1) {
+                c = __builtin_ctz(mask);
+                stack.ref[top] = node.child[c], stack.t[top] = t_near[c], ++top;
+                prefetch(node.child[c]);
+            }
+            // Nearest first pays for the closest hit: what it finds culls the rest. An
+            // occlusion query stops at any blocker, so it skips the sort.
+            if constexpr (Q == Query::closest) sort_far_to_near(stack.ref + base, stack.t + base, top - base);
+            ref = stack.ref[--top];
+            return true;
+        }
+    } else {
+        test_leaf(ref);
+        if (state.done()) return false;
+    }
+    // Next entry still nearer than the closest hit so far (entries were pushed with
+    // t_near <= the closest at that time; a hit since may have passed them).
+    do {
+        if (top == 0) return false;
+        --top;
+    } while (!(stack.t[top] <= state.closest));
+    ref = stack.ref[top];
+    return true;
+}
+
 template <Query Q, int W, int V, bool Prefetch = false, typename State, typename TestLeaf, typename PrefetchLeaf = NoLeafPrefetch>
 WT_KERNEL_INLINE void traverse_tree(const void* tree_nodes, uint32_t root, const BoxRay<V>& box_ray, State& state,
                                     TestLeaf&& test_leaf, PrefetchLeaf prefetch_leaf = {}) {
     const BvhNode<W>* nodes = static_cast<const BvhNode<W>*>(tree_nodes);
-    const auto prefetch = [&](uint32_t child) __attribute__((always_inline)) {
-        if constexpr (Q == Query::any && Prefetch) {
-            if (!(child & kBvhLeafBit)) prefetch_node<W>(nodes, child);
-            else if (child != kBvhEmptyChild) prefetch_leaf(child);
-        }
-    };
-    uint32_t stack_ref[kBvhStackSize];
-    float stack_t[kBvhStackSize];
-    int top = 0;
+    WalkStack stack;
     uint32_t ref = root;
-    for (;;) {
-        if (!(ref & kBvhLeafBit)) {
-            const BvhNode<W>& node = nodes[ref];
-            alignas(64) float t_near[W];
-            uint32_t mask = enter_children<W, V>(node, box_ray, state.closest, t_near);
-            if (mask) {
-                int c = __builtin_ctz(mask);
-                mask &= mask - 1;
-                if (!mask) {  // one child entered: no stack traffic
-                    ref = node.child[c];
-                    continue;
-                }
-                const int second = __builtin_ctz(mask);
-                if (!(mask & (mask - 1))) {  // two: go to the nearer, keep the farther
-                    const bool first_nearer = !(t_near[second] < t_near[c]);
-                    const int near = first_nearer ? c : second, far = first_nearer ? second : c;
-                    stack_ref[top] = node.child[far], stack_t[top] = t_near[far], ++top;
-                    prefetch(node.child[far]);
-                    ref = node.child[near];
-                    continue;
-                }
-                const int base = top;
-                stack_ref[top] = node.child[c], stack_t[top] = t_near[c], ++top;
-                prefetch(node.child[c]);
-                for (; mask; mask &= mask - 1) {
-                    c = __builtin_ctz(mask);
-                    stack_ref[top] = node.child[c], stack_t[top] = t_near[c], ++top;
-                    prefetch(node.child[c]);
-                }
-                // Nearest first pays for the closest hit: what it finds culls the rest. An
-                // occlusion query stops at any blocker, so it skips the sort.
-                if constexpr (Q == Query::closest) sort_far_to_near(stack_ref + base, stack_t + base, top - base);
-                ref = stack_ref[--top];
-                continue;
-            }
-        } else {
-            test_leaf(ref);
-            if (state.done()) return;
-        }
-        // Next entry still nearer than the closest hit so far (entries were pushed with
-        // t_near <= the closest at that time; a hit since may have passed them).
-        do {
-            if (top == 0) return;
-            --top;
-        } while (!(stack_t[top] <= state.closest));
-        ref = stack_ref[top];
+    int top = 0;
+    while (walk_step<Q, W, V, Prefetch>(nodes, ref, top, stack, box_ray, state, test_leaf, prefetch_leaf)) {
     }
+}
+
+// The parallelograms beside the tree (bvh_view.h): tested first for closest hits, where the wall
+// a ray hits bounds its walk; last for any hits, whose walk they cannot shorten, so rays the
+// tree blocks never test them.
+template <TriangleTest T, int L, typename State>
+WT_KERNEL_INLINE void test_beside(const BvhView& bvh, const TriangleRays<T, L>& tri_ray, State& state) {
+    if constexpr (T == TriangleTest::moller_trumbore)
+        if (bvh.beside_count > 0)
+            test_planar_run<Planar::parallelogram>(tri_ray, FlatTriangles<T>{bvh.beside, 0}, bvh.beside_count, state);
+}
+
+// Asks for a leaf's whole block (the leaf test reads every row), line by line from the line
+// holding its first byte: a block need not start on a line.
+template <TriangleTest T>
+WT_KERNEL_INLINE void prefetch_leaf_block(const BvhView& bvh, uint32_t ref) {
+    constexpr uint32_t rows = T == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
+    const uint32_t count = ((ref >> kBvhCountShift) & 7u) + 1u;
+    const uintptr_t block = reinterpret_cast<uintptr_t>(bvh.leaves + std::size_t(ref & kBvhFirstMask) * rows);
+    const uintptr_t end = block + count * rows * uint32_t(sizeof(float));
+    for (uintptr_t line = block & ~uintptr_t(63); line < end; line += 64) __builtin_prefetch(reinterpret_cast<const void*>(line));
 }
 
 // Prefetch: walk with prefetches (traverse_tree; chosen per queue from BvhView::prefetch_pushed).
@@ -196,33 +237,17 @@ template <TriangleTest T, SphereTest S, Query Q, int W, int V, int L, bool Prefe
 WT_KERNEL_INLINE void trace_one(const BvhView& bvh, const RayView& rays, uint32_t i, State& state) {
     const SingleRay<L> ray = broadcast_ray<L>(rays, i);
     const TriangleRays<T, L> tri_ray(ray.o, ray.d);
-    // The parallelograms beside the tree (bvh_view.h): first for closest hits, where the wall a
-    // ray hits bounds its walk; last for any hits, whose walk they cannot shorten, so rays the
-    // tree blocks never test them.
-    const auto test_beside = [&]() __attribute__((always_inline)) {
-        if constexpr (T == TriangleTest::moller_trumbore)
-            if (bvh.beside_count > 0)
-                test_planar_run<Planar::parallelogram>(tri_ray, FlatTriangles<T>{bvh.beside, 0}, bvh.beside_count, state);
-    };
     if constexpr (Q == Query::closest) {
-        test_beside();
+        test_beside<T>(bvh, tri_ray, state);
         if (state.done()) return;
     }
     const BoxRay<V> box_ray(rays, i);
-    constexpr uint32_t rows = T == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
     traverse_tree<Q, W, V, Prefetch>(
         bvh.nodes, bvh.root, box_ray, state,
         [&](uint32_t ref) __attribute__((always_inline)) { test_leaf<T, S, L>(bvh, ref, ray, tri_ray, state); },
-        [&](uint32_t ref) __attribute__((always_inline)) {  // the whole block: the leaf test reads every row
-            // Line by line from the line holding its first byte: a block need not start on a line.
-            const uint32_t count = ((ref >> kBvhCountShift) & 7u) + 1u;
-            const uintptr_t block = reinterpret_cast<uintptr_t>(bvh.leaves + std::size_t(ref & kBvhFirstMask) * rows);
-            const uintptr_t end = block + count * rows * uint32_t(sizeof(float));
-            for (uintptr_t line = block & ~uintptr_t(63); line < end; line += 64)
-                __builtin_prefetch(reinterpret_cast<const void*>(line));
-        });
+        [&](uint32_t ref) __attribute__((always_inline)) { prefetch_leaf_block<T>(bvh, ref); });
     if constexpr (Q == Query::any)
-        if (!state.done()) test_beside();
+        if (!state.done()) test_beside<T>(bvh, tri_ray, state);
 }
 
 // Lanes of a leaf test (a leaf holds at most 8 primitives) and of a node's box test, for
@@ -256,16 +281,6 @@ WT_KERNEL_INLINE void with_node_width(const BvhView& bvh, F&& f) {
         f(std::integral_constant<int, 4>{});
     else
         f(std::integral_constant<int, 8>{});
-}
-
-template <Query Q, TriangleTest T, SphereTest S, int MaxWidth>
-void bvh_query(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
-    with_node_width(bvh, [&](auto width) {
-        if constexpr (Q == Query::any) {  // closest-hit walks never prefetch: no instantiation for them
-            if (bvh.prefetch_pushed) return trace_bvh_rays<Q, T, S, width.value, MaxWidth, true>(bvh, rays, out);
-        }
-        trace_bvh_rays<Q, T, S, width.value, MaxWidth, false>(bvh, rays, out);
-    });
 }
 
 }  // namespace WT_SIMD_ISA
