@@ -29,7 +29,7 @@ command -v valgrind >/dev/null || { echo "perf_gate: FAILED: valgrind is not ins
 
 cases=()
 for isa in scalar sse4 avx2; do
-  for layout in raypacket primpacket bvh bvhpackets; do
+  for layout in raypacket primpacket bvh bvhpackets bvhinterleaved; do
     for query in closest any; do cases+=("intersect/$isa/$layout/$query"); done
   done
 done
@@ -82,7 +82,7 @@ for c in "${cases[@]}"; do
 done
 
 # Every ISA computes the same bits (the kernels are tested for it): the same checksum per
-# workload whatever the ISA, and the BVH's packet traversal the same as its single-ray one.
+# workload whatever the ISA, and the BVH's packet and interleaved walks the same as its single-ray one.
 same_result() {  # CASE... : all must have the first one's checksum
   local first=$1 c
   for c in "$@"; do
@@ -95,7 +95,7 @@ for query in closest any; do
   for layout in raypacket primpacket; do
     same_result intersect/{scalar,sse4,avx2}/$layout/$query
   done
-  same_result intersect/{scalar,sse4,avx2}/{bvh,bvhpackets}/$query
+  same_result intersect/{scalar,sse4,avx2}/{bvh,bvhpackets,bvhinterleaved}/$query
 done
 same_result render/scalar render/avx2
 same_result shade/{scalar,sse4,avx2}

@@ -6,7 +6,9 @@
 //                                                   QUERY closest|any: 20000 incoherent hexroom rays
 //                                                   LAYOUT bvh: the same rays through an 8-wide BVH
 //                                                   of the hexroom plus a 9,800-triangle displaced sphere;
-//                                                   bvhpackets: the same, in packets of the ISA's width
+//                                                   bvhpackets: the same, in packets of the ISA's width;
+//                                                   bvhinterleaved: eight rays' walks at a time, as a
+//                                                   tree past kBvhPrefetchBytes is walked
 //   perf_gate_workload SCENE build                  building that BVH on one thread
 //   perf_gate_workload SCENE render ISA [AOVS]      a 24x24, 2 spp hexroom render on one thread; with
 //                                                   AOVS (an --aov list: "all"), rendering those too
@@ -68,7 +70,7 @@ Rays incoherent_rays(uint32_t count) {
 }
 
 int usage() {
-    std::fprintf(stderr, "usage: perf_gate_workload SCENE intersect ISA raypacket|primpacket|bvh|bvhpackets closest|any\n"
+    std::fprintf(stderr, "usage: perf_gate_workload SCENE intersect ISA raypacket|primpacket|bvh|bvhpackets|bvhinterleaved closest|any\n"
                          "       perf_gate_workload SCENE build\n"
                          "       perf_gate_workload SCENE render ISA [AOV,...]\n"
                          "       perf_gate_workload SCENE shade ISA\n");
@@ -203,12 +205,13 @@ int main(int argc, char** argv) {
     if (what != "intersect" || argc != 6) return usage();
     const std::string layout = argv[4], query = argv[5];
     const bool packets = layout == "bvhpackets";
-    const bool bvh_layout = layout == "bvh" || packets;
+    const bool bvh_layout = layout == "bvh" || packets || layout == "bvhinterleaved";
     const Scene scene = bvh_layout ? meshed_scene(description) : build_scene(description);
     const FlatScene flat_scene(scene);
     const SceneView view = flat_scene.view();
     const Bvh bvh = bvh_layout ? build_bvh(scene, {8, 8, 1}) : Bvh();
-    const BvhView tree = bvh_view(bvh);
+    BvhView tree = bvh_view(bvh);
+    tree.prefetch_pushed = layout == "bvhinterleaved";  // the walks of a tree past the caches, on this one
     const IntersectKernels& k = intersect_kernels(*isa);
     const Rays rays = incoherent_rays(20000);
     const std::size_t n = rays.ox.size();
