@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -59,12 +60,15 @@ inline std::vector<FuzzFile> split_fuzz_files(std::string_view input, const std:
 }
 
 // A directory of its own for the process (several fuzzers run at once), emptied and refilled
-// for every input, removed at exit.
+// for every input, removed at exit. Made under $TMPDIR (else /tmp): a fuzzer that crashes or is
+// killed never reaches the destructor, and run_fuzzers.sh points TMPDIR into the scratch
+// directory it removes whatever the fuzzer's end.
 class FuzzDirectory {
 public:
     FuzzDirectory() {
-        char name[] = "/tmp/wavetrace-fuzz-XXXXXX";
-        if (mkdtemp(name)) path_ = name;
+        const char* tmp = std::getenv("TMPDIR");
+        std::string name = std::string(tmp && *tmp ? tmp : "/tmp") + "/wavetrace-fuzz-XXXXXX";
+        if (mkdtemp(name.data())) path_ = name;
     }
     ~FuzzDirectory() {
         clear();

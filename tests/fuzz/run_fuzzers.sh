@@ -37,10 +37,11 @@ run_target() {  # TARGET: fuzzes it, leaves its summary line in $results/TARGET.
   case $target in
     fuzz_obj | fuzz_gltf) lsan=${LSAN_OPTIONS:-suppressions=$here/../lsan.supp:fast_unwind_on_malloc=0} ;;
   esac
-  # Run in a scratch directory: inputs may name relative files.
+  # Run in a scratch directory: inputs may name relative files. Its TMPDIR too, so the files a
+  # fuzzer writes (FuzzDirectory) go when the scratch directory does, even after a crash.
   local scratch status
   scratch=$(mktemp -d)
-  (cd "$scratch" && LSAN_OPTIONS=$lsan "$binary" "${dict[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  (cd "$scratch" && TMPDIR=$scratch LSAN_OPTIONS=$lsan "$binary" "${dict[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
       -malloc_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$artifacts/$target-" \
       "$corpus" "$here/corpus/$target") > "$log" 2>&1
   status=$?
