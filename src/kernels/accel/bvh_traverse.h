@@ -117,21 +117,7 @@ struct NoLeafPrefetch {
     void operator()(uint32_t) const {}
 };
 
-// One ray's walk of one tree (`tree_nodes`, from child reference `root`), a node visit or a
-// leaf test at a time: nearest child first for closest hits, test_leaf(ref) at each leaf it
-// reaches, over when the state says so. The flat tree's leaves are primitive blocks; the
-// instances' top level's leaves are instances, each of which walks its mesh's tree the same way.
-// traverse_tree takes the steps of one walk in a row (walk_step); bvh_interleaved_traverse.h
-// takes those of several walks in turn.
-//
-// Prefetch: an occlusion walk asks for the lines of each child it pushes (prefetch_leaf(ref)
-// for a leaf's block). Its stack is not sorted, and unless a blocker is found every entry is
-// visited, so the lines are wanted soon; asking while pushing lets the misses of a node's
-// entered children overlap. A closest-hit walk may skip its far entries, and does not ask.
-// A template argument, not a run-time flag: the walks of trees that fit in the caches stay
-// exactly as they were.
-// Where a walk stands: what it visits next (`ref`: an inner node, or a leaf) and the entries
-// it has left for later, with their entry distances.
+// The entries a walk has left for later, with their entry distances (the walk's `top` counts them).
 struct WalkStack {
     uint32_t ref[kBvhStackSize];
     float t[kBvhStackSize];
@@ -144,8 +130,21 @@ WT_KERNEL_INLINE void prefetch_ref(const BvhNode<W>* nodes, uint32_t child, Pref
     else if (child != kBvhEmptyChild) prefetch_leaf(child);
 }
 
-// One step of a walk: visits `ref` and moves it to what comes next; false when the walk is
-// over. `ref` and `top` are the caller's, so a walk taken in one go keeps them in registers.
+// One ray's walk of one tree, a node visit or a leaf test at a time: nearest child first for
+// closest hits, test_leaf(ref) at each leaf it reaches, over when the state says so. The flat
+// tree's leaves are primitive blocks; the instances' top level's leaves are instances, each of
+// which walks its mesh's tree the same way. traverse_tree takes the steps of one walk in a row;
+// bvh_interleaved_traverse.h takes those of several walks in turn.
+//
+// One step visits `ref` and moves it to what comes next; false when the walk is over. `ref`
+// and `top` are the caller's, so a walk taken in one go keeps them in registers.
+//
+// Prefetch: an occlusion walk asks for the lines of each child it pushes (prefetch_leaf(ref)
+// for a leaf's block). Its stack is not sorted, and unless a blocker is found every entry is
+// visited, so the lines are wanted soon; asking while pushing lets the misses of a node's
+// entered children overlap. A closest-hit walk may skip its far entries, and does not ask.
+// A template argument, not a run-time flag: the walks of trees that fit in the caches stay
+// exactly as they were.
 template <Query Q, int W, int V, bool Prefetch, typename State, typename TestLeaf, typename PrefetchLeaf>
 WT_KERNEL_INLINE bool walk_step(const BvhNode<W>* nodes, uint32_t& ref, int& top, WalkStack& stack, const BoxRay<V>& box_ray,
                                 State& state, TestLeaf&& test_leaf, PrefetchLeaf&& prefetch_leaf) {
@@ -200,6 +199,7 @@ WT_KERNEL_INLINE bool walk_step(const BvhNode<W>* nodes, uint32_t& ref, int& top
     return true;
 }
 
+// One ray's walk of the tree `tree_nodes` from child reference `root`, its steps in a row.
 template <Query Q, int W, int V, bool Prefetch = false, typename State, typename TestLeaf, typename PrefetchLeaf = NoLeafPrefetch>
 WT_KERNEL_INLINE void traverse_tree(const void* tree_nodes, uint32_t root, const BoxRay<V>& box_ray, State& state,
                                     TestLeaf&& test_leaf, PrefetchLeaf prefetch_leaf = {}) {
