@@ -14,7 +14,7 @@
 //                                                   AOVS (an --aov list: "all"), rendering those too
 //   perf_gate_workload SCENE shade ISA              the shade kernels (kernels/shading) on what the
 //                                                   incoherent rays hit: the surface points, then
-//                                                   on the flat diffuse vertices one light sample
+//                                                   on the diffuse vertices one light sample
 //                                                   each and the continuation past the roulette's
 //                                                   start
 
@@ -154,7 +154,7 @@ int main(int argc, char** argv) {
             const Ray ray{{rays.ox[i], rays.oy[i], rays.oz[i]}, {rays.dx[i], rays.dy[i], rays.dz[i]}};
             const SurfacePoint surface = surface_at(scene, ray, {t[i], prim[i], u[i], v[i]});
             const Material& m = scene.materials[surface.material];
-            if (!continues_as_flat_diffuse(m, surface)) continue;
+            if (!continues_as_diffuse(m)) continue;
             const PathSeed path{path_key(0, uint32_t(i), 0), 0};
             const DefaultEstimator::Sampler random(path, kBounce, 1);
             const ContinuationRandom draws = continuation_random<DefaultEstimator>(random);

@@ -1,7 +1,8 @@
 // The SIMD shade kernels against the scalar vertex code they replace, bit for bit, on every ISA
-// this CPU runs, on random flat diffuse vertices about the hexroom's light and on the extremes
-// (poles of the frame, grazing directions, the disk's centre and diagonals, black and
-// near-black paths, huge and tiny scales, zero coordinates): the surface kernel
+// this CPU runs, on random diffuse vertices about the hexroom's light, flat and smooth (shading
+// normals tilted, tangent, opposite, equal to the geometric one), and on the extremes (poles of
+// the frame, grazing directions, the disk's centre and diagonals, black and near-black paths,
+// huge and tiny scales, zero coordinates): the surface kernel
 // (kernels/shading/surface_points.h) against surface_at, the diffuse continuation kernel
 // (kernels/shading/diffuse_continuation.h) against continue_path, the light sample kernel
 // (kernels/shading/diffuse_light_samples.h) against DirectLightSampler (core/path/path_vertex.h).
@@ -44,7 +45,9 @@ std::string describe(const Vertex& v) {
     s << "material " << int(v.material.type) << " sigma " << v.material.sigma << " albedo (" << v.material.albedo.x << ", "
       << v.material.albedo.y << ", " << v.material.albedo.z << "), position (" << v.surface.position.x << ", "
       << v.surface.position.y << ", " << v.surface.position.z << "), normal (" << v.surface.normal.x << ", " << v.surface.normal.y
-      << ", " << v.surface.normal.z << "), d (" << v.d.x << ", " << v.d.y << ", " << v.d.z << "), key " << v.path.key
+      << ", " << v.surface.normal.z << "), shading normal (" << v.surface.shading_normal.x << ", "
+      << v.surface.shading_normal.y << ", " << v.surface.shading_normal.z << (v.surface.smooth ? "), smooth" : "), flat")
+      << ", d (" << v.d.x << ", " << v.d.y << ", " << v.d.z << "), key " << v.path.key
       << " sample " << v.path.sample;
     return s.str();
 }
@@ -82,7 +85,14 @@ std::vector<Vertex> random_vertices(std::size_t count, uint32_t seed) {
             default: break;
         }
         v.surface.shading_normal = v.surface.normal;
-        v.surface.smooth = false;
+        switch (rng() % 8) {  // vertex normals: tilted, slightly or far, tangent, or wound the other way
+            case 0: v.surface.shading_normal = glm::normalize(v.surface.normal + 0.2f * random_unit(rng)); break;
+            case 1: v.surface.shading_normal = glm::normalize(v.surface.normal + random_unit(rng)); break;
+            case 2: v.surface.shading_normal = glm::normalize(glm::cross(v.surface.normal, random_unit(rng))); break;
+            case 3: v.surface.shading_normal = -glm::normalize(v.surface.normal + 0.5f * random_unit(rng)); break;
+            default: break;
+        }
+        v.surface.smooth = v.surface.shading_normal != v.surface.normal;
         v.surface.material = 0;
         v.d = random_unit(rng);
         if (rng() % 8 == 0) {  // grazing: d in the surface's plane, give or take rounding
@@ -121,9 +131,10 @@ void expect_kernel_equals_continue_path(const ShadeKernels& kernels, uint32_t bo
     actual.reserve(vertices.size());
     DiffuseVertexQueue queue;
     queue.reserve(vertices.size(), 2);
+    std::size_t smooth_as_sampled = 0, smooth_mirrored = 0;  // smooth vertices whose paths go on
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         const Vertex& v = vertices[i];
-        ASSERT_TRUE(continues_as_flat_diffuse(v.material, v.surface));
+        ASSERT_TRUE(continues_as_diffuse(v.material));
         ContinuationRandom random = continuation_random<E>(scene, v.path, bounce);
         if (i < std::size(kFixedDraws)) random.direction = {kFixedDraws[i].u0, kFixedDraws[i].u1};
         queue.push(v.surface, v.material, v.d, v.throughput, random.direction.first, random.direction.second,
@@ -136,8 +147,12 @@ void expect_kernel_equals_continue_path(const ShadeKernels& kernels, uint32_t bo
             next = continue_path<E, false>(scene, v.material, v.surface, v.d, v.throughput, v.path, bounce,
                                            v.specular_light_elsewhere);
         } else {
-            const BsdfSample s = sample_bsdf(v.material, v.surface.normal, v.d, random.direction.first, random.direction.second,
-                                             random.choice_and_roulette.first);
+            const BsdfSample s =
+                v.surface.smooth ? sample_bsdf_about_shading_normal(v.material, v.surface.normal, v.surface.shading_normal, v.d,
+                                                                    random.direction.first, random.direction.second,
+                                                                    random.choice_and_roulette.first, FresnelModel::schlick)
+                                 : sample_bsdf(v.material, v.surface.normal, v.d, random.direction.first, random.direction.second,
+                                               random.choice_and_roulette.first);
             if (s.valid) {
                 PathContinuation c;
                 c.throughput = v.throughput * s.weight;
@@ -157,6 +172,12 @@ void expect_kernel_equals_continue_path(const ShadeKernels& kernels, uint32_t bo
             }
         }
         if (next) expected.push<E::mis>(*next, uint32_t(i));
+        if (next && v.surface.smooth) {  // the direction drawn about the shading normal, before the mirror
+            const glm::vec3 n = glm::dot(v.d, v.surface.normal) < 0.0f ? v.surface.normal : -v.surface.normal;
+            const BsdfSample drawn = sample_diffuse(v.material, shading_normal_facing(v.surface.shading_normal, n), v.d,
+                                                    random.direction.first, random.direction.second);
+            (glm::dot(drawn.direction, n) > 0.0f ? smooth_as_sampled : smooth_mirrored) += 1;
+        }
     }
     const DiffuseContinuation settings{int(bounce) >= scene.settings.rr_start_bounce, E::mis,
                                        bounce == 0 ? light_traces_caustics : merges_photons};
@@ -165,9 +186,16 @@ void expect_kernel_equals_continue_path(const ShadeKernels& kernels, uint32_t bo
     const std::string reproduce = std::string("isa ") + isa_name(kernels.isa) + ", bounce " + std::to_string(bounce) +
                                   ", mis " + std::to_string(E::mis) + ", seed " + std::to_string(seed) +
                                   " (reproduce: kernels_test --gtest_filter='ShadeKernels.*')";
-    // Both sides: paths end (black, roulette, the horizon) and paths go on.
+    // Both sides: paths end (black, roulette, the horizon) and paths go on; smooth vertices' paths
+    // go on both as sampled and mirrored up through the geometric surface (below their shading
+    // normal), and flat ones go on too.
     EXPECT_GT(expected.count, vertices.size() / 4) << reproduce;
     EXPECT_LT(expected.count, vertices.size()) << reproduce;
+    std::size_t flat = 0;
+    for (std::size_t k = 0; k < expected.count; ++k) flat += !vertices[expected.path[k]].surface.smooth;
+    EXPECT_GT(flat, 0u) << reproduce;
+    EXPECT_GT(smooth_as_sampled, 0u) << reproduce;
+    EXPECT_GT(smooth_mirrored, 0u) << reproduce;
     ASSERT_EQ(actual.count, expected.count) << reproduce;
     const auto same_bits = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; };
     for (std::size_t k = 0; k < expected.count; ++k) {
@@ -232,9 +260,14 @@ void expect_light_kernel_equals_direct_light_sampler(const ShadeKernels& kernels
     const std::string reproduce = std::string("isa ") + isa_name(kernels.isa) + ", bounce " + std::to_string(bounce) +
                                   ", mis " + std::to_string(E::mis) + ", clamps " + std::to_string(E::clamps_indirect) +
                                   ", seed " + std::to_string(seed) + " (reproduce: kernels_test --gtest_filter='ShadeKernels.*')";
-    // Both sides: samples that trace a ray and samples that cannot contribute.
+    // Both sides: samples that trace a ray and samples that cannot contribute; rays from flat
+    // vertices and from smooth ones (the folded BSDF).
     EXPECT_GT(expected.count, sampled * count / 4) << reproduce;
     EXPECT_LT(expected.count, sampled * count) << reproduce;
+    std::size_t from_smooth = 0;
+    for (std::size_t k = 0; k < expected.count; ++k) from_smooth += vertices[expected.path[k]].surface.smooth;
+    EXPECT_GT(from_smooth, 0u) << reproduce;
+    EXPECT_LT(from_smooth, expected.count) << reproduce;
     ASSERT_EQ(actual.count, expected.count) << reproduce;
     // The kernel pushes sample j of N neighbouring vertices together: compared path by path, each
     // path's samples in the order they were pushed (the order the shadow stage adds them in).

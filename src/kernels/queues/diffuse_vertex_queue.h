@@ -1,5 +1,5 @@
 #pragma once
-// A chunk of the flat diffuse vertices of one shade stage: what DirectLightSampler and
+// A chunk of the diffuse vertices of one shade stage: what DirectLightSampler and
 // continue_path (core/path/path_vertex.h) read at such a vertex, with its random numbers already
 // drawn and its light samples' points already picked. The shade loop fills it
 // (kernels/wavefront/shade_queue.h) and, whenever it is full and at the end, the shade kernels
@@ -21,20 +21,20 @@
 namespace wt {
 
 // Whether a vertex's light samples and continuation are the shade kernels': a Lambertian or
-// Oren-Nayar material on a surface without a shading normal (the folded BSDF about one stays
-// scalar).
-inline bool continues_as_flat_diffuse(const Material& m, const SurfacePoint& surface) {
-    return (m.type == MaterialType::lambertian || m.type == MaterialType::oren_nayar) && !surface.smooth;
+// Oren-Nayar material, flat or about a shading normal (the folded BSDF of
+// core/materials/shading_normal_bsdf.h).
+inline bool continues_as_diffuse(const Material& m) {
+    return m.type == MaterialType::lambertian || m.type == MaterialType::oren_nayar;
 }
 
-// What DirectLightSampler's choices at one bounce come to for every flat diffuse vertex of it.
+// What DirectLightSampler's choices at one bounce come to for every diffuse vertex of it.
 struct DiffuseLightSampling {
     uint32_t count;          // light samples per vertex (shadow rays), each weighted 1 / count
     bool mis;                // weighted against the BSDF's sampling of the same direction
     float clamp_limit;       // per channel, per sample: light_sample_clamp_limit, infinite when not clamped
 };
 
-// What continue_path's choices at one bounce come to for every flat diffuse vertex of it.
+// What continue_path's choices at one bounce come to for every diffuse vertex of it.
 struct DiffuseContinuation {
     bool roulette;  // Russian roulette at this bounce (bounce >= rr_start_bounce)
     bool mis;       // the estimator's mis: the next ray carries its pdf and counts the emission it finds
@@ -51,6 +51,7 @@ struct DiffuseVertexQueue {
     AlignedVector<float> px, py, pz;              // SurfacePoint::position
     AlignedVector<float> ex, ey, ez;              // SurfacePoint::error
     AlignedVector<float> nx, ny, nz;              // SurfacePoint::normal (geometric)
+    AlignedVector<float> snx, sny, snz;           // SurfacePoint::shading_normal, written and read only where kSmooth
     AlignedVector<float> dx, dy, dz;              // the incoming ray's direction
     AlignedVector<float> throughput_r, throughput_g, throughput_b;
     AlignedVector<float> albedo_r, albedo_g, albedo_b;
@@ -58,11 +59,15 @@ struct DiffuseVertexQueue {
     AlignedVector<float> u0, u1, roulette;            // dim::bsdf_u, dim::bsdf_v, dim::roulette
     AlignedVector<uint32_t> path;                     // slot in the PathTable
     // kOrenNayar; kSpecularLightElsewhere: the incoming ray's PathContinuation::specular_light_elsewhere;
-    // kSamplesLights: the vertex has light samples (gathers_direct_light, and the scene has lights).
+    // kSamplesLights: the vertex has light samples (gathers_direct_light, and the scene has lights);
+    // kSmooth: SurfacePoint::smooth, its BSDF is folded about the shading normal.
     AlignedVector<uint8_t> flags;
-    static constexpr uint8_t kOrenNayar = 1, kSpecularLightElsewhere = 2, kSamplesLights = 4;
+    static constexpr uint8_t kOrenNayar = 1, kSpecularLightElsewhere = 2, kSamplesLights = 4, kSmooth = 8;
     std::size_t count = 0;
     std::size_t capacity = 0;
+    // Some vertex of the chunk is smooth: the kernels' folded code runs only then, so a scene
+    // without vertex normals runs the flat code alone.
+    bool has_smooth = false;
 
     // The light samples' points (LightSample), sample-major: sample j of entry i at j * stride + i,
     // so a kernel reads sample j of N neighbouring vertices as one vector. Written for the entries
@@ -83,12 +88,13 @@ struct DiffuseVertexQueue {
     }
 
     bool full() const { return count == capacity; }
+    void clear() { count = 0, has_smooth = false; }
 
     // Room for `n` vertices (a chunk: chunk_for()) of `light_samples_per_vertex` samples each.
     void reserve(std::size_t n, std::size_t light_samples_per_vertex) {
         capacity = n;
         stride = (n + 2 * kPadding - 1) / kPadding * kPadding;  // whole vectors: each sample's row stays aligned
-        for (auto* a : {&px, &py, &pz, &ex, &ey, &ez, &nx, &ny, &nz, &dx, &dy, &dz, &throughput_r, &throughput_g, &throughput_b,
+        for (auto* a : {&px, &py, &pz, &ex, &ey, &ez, &nx, &ny, &nz, &snx, &sny, &snz, &dx, &dy, &dz, &throughput_r, &throughput_g, &throughput_b,
                         &albedo_r, &albedo_g, &albedo_b, &oren_nayar_a, &oren_nayar_b, &u0, &u1, &roulette})
             a->resize(stride);
         path.resize(stride), flags.resize(stride);
@@ -98,7 +104,7 @@ struct DiffuseVertexQueue {
     }
 
     // Bytes per entry and per light sample, for WavefrontWorkspace::bytes_needed.
-    static constexpr std::size_t kBytesPerEntry = 23 * 4 + 4 + 1;
+    static constexpr std::size_t kBytesPerEntry = 26 * 4 + 4 + 1;
     static constexpr std::size_t kBytesPerLightSample = 13 * 4;
 
     // A vertex; its light samples follow with set_light_sample(count - 1, ...) when it has them.
@@ -109,6 +115,10 @@ struct DiffuseVertexQueue {
         px[i] = s.position.x, py[i] = s.position.y, pz[i] = s.position.z;
         ex[i] = s.error.x, ey[i] = s.error.y, ez[i] = s.error.z;
         nx[i] = s.normal.x, ny[i] = s.normal.y, nz[i] = s.normal.z;
+        if (s.smooth) {
+            snx[i] = s.shading_normal.x, sny[i] = s.shading_normal.y, snz[i] = s.shading_normal.z;
+            has_smooth = true;
+        }
         dx[i] = d.x, dy[i] = d.y, dz[i] = d.z;
         throughput_r[i] = throughput.x, throughput_g[i] = throughput.y, throughput_b[i] = throughput.z;
         albedo_r[i] = m.albedo.x, albedo_g[i] = m.albedo.y, albedo_b[i] = m.albedo.z;
@@ -118,7 +128,7 @@ struct DiffuseVertexQueue {
         u0[i] = bsdf_u, u1[i] = bsdf_v, roulette[i] = roulette_u;
         path[i] = slot;
         flags[i] = uint8_t((oren_nayar ? kOrenNayar : 0) | (specular_light_elsewhere ? kSpecularLightElsewhere : 0) |
-                           (samples_lights ? kSamplesLights : 0));
+                           (samples_lights ? kSamplesLights : 0) | (s.smooth ? kSmooth : 0));
     }
 
     void set_light_sample(std::size_t entry, uint32_t index, const LightSample& light) {

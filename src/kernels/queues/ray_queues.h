@@ -126,7 +126,7 @@ struct ShadowQueue {
 };
 
 // What the shade stage's kernels (kernels/shading) read and write besides the queues: a chunk
-// of surface points and a chunk of flat diffuse vertices (kernels/wavefront/shade_queue.h).
+// of surface points and a chunk of diffuse vertices (kernels/wavefront/shade_queue.h).
 struct ShadeChunks {
     SurfaceChunk surfaces;
     DiffuseVertexQueue diffuse;

@@ -1,7 +1,9 @@
 #pragma once
-// The continuation of flat diffuse vertices, N at a time: continue_path
-// (core/path/path_vertex.h) for a Lambertian or Oren-Nayar vertex without a shading normal, over
-// a DiffuseVertexQueue, pushing the paths that go on into the next RayQueue. One generic loop,
+// The continuation of diffuse vertices, N at a time: continue_path (core/path/path_vertex.h) for
+// a Lambertian or Oren-Nayar vertex, flat (sample_bsdf) or about a shading normal
+// (sample_bsdf_about_shading_normal: the cosine lobe about it, a direction below the geometric
+// surface mirrored up through it, and folded_cosine_pdf for mis, only in vectors with a smooth
+// lane), over a DiffuseVertexQueue, pushing the paths that go on into the next RayQueue. One generic loop,
 // instantiated per ISA at its widest vector (kernels/isa/shade_<isa>.cpp) and at width 1 for the
 // scalar kernels.
 //
@@ -51,27 +53,54 @@ inline Lanes3<N> to_world_normalized(const Lanes3<N>& n, const Lanes3<N>& local)
     return {w.x * inverse_length, w.y * inverse_length, w.z * inverse_length};
 }
 
-template <int N>
-void continue_diffuse_vertices(const DiffuseVertexQueue& q, const DiffuseContinuation& settings, RayQueue& next) {
+// kFolds: the queue has smooth vertices (DiffuseVertexQueue::has_smooth); without it, the flat
+// code alone.
+template <int N, bool kFolds>
+void continue_diffuse_vertices_with(const DiffuseVertexQueue& q, const DiffuseContinuation& settings, RayQueue& next) {
     alignas(64) float out[10][N];  // origin, direction, throughput, pdf of each lane
     for (std::size_t i = 0; i < q.count; i += N) {
+        const vint<N> flags = flag_lanes<N>(q.flags, i);
         const Lanes3<N> d = load3<N>(q.dx, q.dy, q.dz, i);
         const Lanes3<N> geometric = load3<N>(q.nx, q.ny, q.nz, i);
-        // sample_bsdf: the normal facing the incoming ray, then sample_diffuse about it.
+        // sample_bsdf: the normal facing the incoming ray, then sample_diffuse about it; about the
+        // shading normal turned to its side where the vertex is smooth.
         const Lanes3<N> n = facing(geometric, d);
-        const Lanes3<N> wi =
-            to_world_normalized<N>(n, sample_cosine_hemisphere<N>(vfloat<N>::load(q.u0.data() + i), vfloat<N>::load(q.u1.data() + i)));
-        const vfloat<N> cos_i = dot(n, wi);
+        const vbool<N> smooth = has_flag<N>(flags, DiffuseVertexQueue::kSmooth);
+        const bool folds = kFolds && lanes_below(smooth, q.count - i) != 0;
+        const Lanes3<N> shading = folds ? select(smooth, shading_normal_facing<N>(load3<N>(q.snx, q.sny, q.snz, i), n), n) : n;
+        const Lanes3<N> sampled = to_world_normalized<N>(
+            shading, sample_cosine_hemisphere<N>(vfloat<N>::load(q.u0.data() + i), vfloat<N>::load(q.u1.data() + i)));
+        const vfloat<N> cos_i = dot(shading, sampled);
         vbool<N> alive = ~(cos_i <= 0.0f);  // lost to rounding at the horizon (NaN goes on, as in sample_diffuse)
 
         // f * cos / pdf: the albedo, times the Oren-Nayar factor (oren_nayar_factor).
         const Lanes3<N> wo = negate(d);
-        const vfloat<N> cos_o = dot(n, wo);
+        const vfloat<N> cos_o = dot(shading, wo);
         const vfloat<N> factor = oren_nayar_factor<N>(vfloat<N>::load(q.oren_nayar_a.data() + i),
-                                                      vfloat<N>::load(q.oren_nayar_b.data() + i), cos_i, cos_o, dot(wi, wo));
-        const vbool<N> rough = flag_lanes<N>(q.flags, i, DiffuseVertexQueue::kOrenNayar);
+                                                      vfloat<N>::load(q.oren_nayar_b.data() + i), cos_i, cos_o, dot(sampled, wo));
+        const vbool<N> rough = has_flag<N>(flags, DiffuseVertexQueue::kOrenNayar);
         const Lanes3<N> albedo = load3<N>(q.albedo_r, q.albedo_g, q.albedo_b, i);
         const Lanes3<N> weight = select(rough, Lanes3<N>{albedo.x * factor, albedo.y * factor, albedo.z * factor}, albedo);
+
+        Lanes3<N> wi = sampled;
+        vfloat<N> pdf = cos_i * kInvPi;  // diffuse_direction_pdf, flat
+        if (folds) {
+            // mirrored_to_side: below the geometric surface, mirrored through it and normalized;
+            // the path ends if that is not strictly above it either.
+            const vbool<N> below = ~(dot(sampled, n) > 0.0f);
+            const vfloat<N> twice = 2.0f * dot(sampled, n);
+            const Lanes3<N> reflected{sampled.x - twice * n.x, sampled.y - twice * n.y, sampled.z - twice * n.z};
+            const vfloat<N> inverse_length = 1.0f / simd::sqrt(dot(reflected, reflected));
+            const Lanes3<N> mirrored{reflected.x * inverse_length, reflected.y * inverse_length, reflected.z * inverse_length};
+            const vbool<N> mirrors = smooth & below;
+            wi = select(mirrors, mirrored, sampled);
+            alive = alive & ~(mirrors & ~(dot(mirrored, n) > 0.0f));
+            // folded_cosine_pdf at the direction taken, cos_geom about the facing normal.
+            const vfloat<N> cos_geom = dot(n, wi);
+            const Lanes3<N> image{wi.x - (2.0f * cos_geom) * n.x, wi.y - (2.0f * cos_geom) * n.y, wi.z - (2.0f * cos_geom) * n.z};
+            const vfloat<N> folded = (fmax_lanes<N>(0.0f, dot(shading, wi)) + fmax_lanes<N>(0.0f, dot(shading, image))) * kInvPi;
+            pdf = simd::select(smooth, folded, pdf);
+        }
 
         const Lanes3<N> incoming = load3<N>(q.throughput_r, q.throughput_g, q.throughput_b, i);
         Lanes3<N> throughput{incoming.x * weight.x, incoming.y * weight.y, incoming.z * weight.z};
@@ -86,7 +115,7 @@ void continue_diffuse_vertices(const DiffuseVertexQueue& q, const DiffuseContinu
         const Lanes3<N> origin = offset_ray_origin<N>(load3<N>(q.px, q.py, q.pz, i), load3<N>(q.ex, q.ey, q.ez, i), side);
 
         const vfloat<N> lanes[10] = {origin.x,     origin.y,     origin.z,     wi.x, wi.y, wi.z,
-                                     throughput.x, throughput.y, throughput.z, cos_i * kInvPi};
+                                     throughput.x, throughput.y, throughput.z, pdf};
         for (int k = 0; k < 10; ++k) vfloat<N>::store(out[k], lanes[k]);
         for (uint32_t pushed = lanes_below(alive, q.count - i); pushed != 0; pushed &= pushed - 1) {
             const int lane = __builtin_ctz(pushed);
@@ -98,6 +127,12 @@ void continue_diffuse_vertices(const DiffuseVertexQueue& q, const DiffuseContinu
                       uint8_t((settings.mis ? RayQueue::kCountEmission : 0) | (elsewhere ? RayQueue::kSpecularLightElsewhere : 0)));
         }
     }
+}
+
+template <int N>
+void continue_diffuse_vertices(const DiffuseVertexQueue& q, const DiffuseContinuation& settings, RayQueue& next) {
+    if (q.has_smooth) continue_diffuse_vertices_with<N, true>(q, settings, next);
+    else continue_diffuse_vertices_with<N, false>(q, settings, next);
 }
 
 }  // namespace WT_SIMD_ISA

@@ -87,6 +87,13 @@ inline Lanes3<N> facing(const Lanes3<N>& n, const Lanes3<N>& d) {
     return select(dot(d, n) < 0.0f, n, negate(n));
 }
 
+// shading_normal_facing (core/materials/shading_normal_bsdf.h): the shading normal s turned to
+// the side of the facing geometric normal n.
+template <int N>
+inline Lanes3<N> shading_normal_facing(const Lanes3<N>& s, const Lanes3<N>& n) {
+    return select(dot(s, n) < 0.0f, negate(s), s);
+}
+
 // oren_nayar_factor (core/materials/bsdf.h), from oren_nayar_terms' a and b.
 template <int N>
 inline vfloat<N> oren_nayar_factor(vfloat<N> a, vfloat<N> b, vfloat<N> cos_i, vfloat<N> cos_o, vfloat<N> wi_dot_wo) {
@@ -94,12 +101,17 @@ inline vfloat<N> oren_nayar_factor(vfloat<N> a, vfloat<N> b, vfloat<N> cos_i, vf
     return a + b * projected / fmax_lanes<N>(fmax_lanes<N>(cos_i, cos_o), 1e-7f);
 }
 
-// Lanes [i, i + N) of a per-entry flag byte: those with `bit` set.
+// Lanes [i, i + N) of a per-entry flag byte, widened once per vector (the kernels test several
+// of its bits), and the lanes with `bit` set.
 template <int N>
-inline vbool<N> flag_lanes(const AlignedVector<uint8_t>& flags, std::size_t i, uint8_t bit) {
-    alignas(64) int32_t set[N];
-    for (int lane = 0; lane < N; ++lane) set[lane] = flags[i + lane] & bit;
-    return vint<N>::load(set) != vint<N>(0);
+inline vint<N> flag_lanes(const AlignedVector<uint8_t>& flags, std::size_t i) {
+    alignas(64) int32_t widened[N];
+    for (int lane = 0; lane < N; ++lane) widened[lane] = flags[i + lane];
+    return vint<N>::load(widened);
+}
+template <int N>
+inline vbool<N> has_flag(vint<N> flags, uint8_t bit) {
+    return (flags & vint<N>(bit)) != vint<N>(0);
 }
 
 // The lanes of `m` among the first `count`, as bits (count may exceed N).

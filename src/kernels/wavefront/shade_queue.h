@@ -33,7 +33,8 @@ namespace wt {
 // time, and a fourth set of instantiations would cost every build for nothing).
 // The SIMD shade kernels (kernels/shading, the ISA's widest vector) take the common vertices: in
 // scenes of flat triangles and spheres alone the surface points, a chunk of hits at a time; the
-// flat diffuse vertices' light samples and continuations, for which the loop draws the random
+// diffuse vertices' light samples and continuations (flat, or folded about a shading normal),
+// for which the loop draws the random
 // numbers, picks the light points and queues them in `chunks.diffuse`, and the kernels append
 // shadow rays and next rays, a chunk at a time, among the other vertices'. Every path's terms
 // are still added in the same order (its emission and photons here, its light samples in index
@@ -55,7 +56,7 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
     DiffuseVertexQueue& diffuse = chunks.diffuse;
     next_rays.count = 0;
     shadows.count = 0;
-    diffuse.count = 0;
+    diffuse.clear();
     [[maybe_unused]] const auto shade_diffuse_chunk = [&] {
         if (has_lights) {
             const DiffuseLightSampling sampling{shadow_ray_count, E::mis && path_continues,
@@ -67,7 +68,7 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
                                                    bounce == 0 ? scene.light_traces_caustics : scene.merges_photons};
             kernels.continue_diffuse(diffuse, continuation, next_rays);
         }
-        diffuse.count = 0;
+        diffuse.clear();
     };
     [[maybe_unused]] std::optional<Material> textured;  // kRough: the hit's material with its textures looked up
     for (std::size_t i = 0; i < rays.count; ++i) {
@@ -116,7 +117,7 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
                                                                  photon_vertex_limit(scene, bounce))
                                                       .radiance);
         if constexpr (!kListedLights) {
-            if (vector_kernels && continues_as_flat_diffuse(m, surface)) {  // the shade kernels' vertex
+            if (vector_kernels && continues_as_diffuse(m)) {  // the shade kernels' vertex
                 const bool samples_lights = has_lights && gathers_direct_light(m);
                 if (!samples_lights && !path_continues) continue;
                 const typename E::Sampler random(path, bounce, shadow_ray_count);

@@ -41,7 +41,7 @@ void intersect_closest_stage(const IntersectContext& context, const RayQueue& ra
 // AOVs (a non-empty `paths.first_surface`), each path's first surface (core/path/first_surface.h);
 // with `photons` (the batch's maps, when the scene merges photons), their estimate where a path
 // gathers it (gathers_photons).
-// `kernels` compute the surface points and shade the flat diffuse vertices, a chunk at a time in
+// `kernels` compute the surface points and shade the diffuse vertices, a chunk at a time in
 // `chunks` (shade_queue.h).
 void shade_stage(const Scene& scene, const ShadeKernels& kernels, uint32_t bounce, const RayQueue& rays, const HitQueue& hits,
                  PathTable& paths, ShadeChunks& chunks, RayQueue& next_rays, ShadowQueue& shadows,
