@@ -15,6 +15,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -333,8 +334,65 @@ TEST(ShadeKernels, DiffuseLightSamplesEqualDirectLightSamplerBitForBit) {
     }
 }
 
-// Hits on every triangle and sphere of the hexroom, on random triangles and on a sliver, at random
-// barycentrics and distances, with misses among them, in chunks of every length.
+// Hits on every triangle and sphere of `scene`, then on random ones, at random barycentrics and
+// distances, with misses among them, in chunks of every length: the surface kernel against
+// surface_at on every ISA and both triangle tests; every 13th hit at the midpoint of an edge, on
+// `edge_prim` where one is given. Returns the hits on triangles that were smooth and those that
+// were not.
+std::pair<std::size_t, std::size_t> expect_surface_points_equal_surface_at(Scene& scene, uint32_t seed,
+                                                                           uint32_t edge_prim = kNoHit) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    EXPECT_TRUE(surface_kernel_covers(scene));
+    const uint32_t primitives = uint32_t(scene.triangles.size() + scene.spheres.size());
+    const std::size_t n = std::max<std::size_t>(3 * SurfaceChunk::kSize + 7, primitives + SurfaceChunk::kSize + 7);
+    RayQueue rays;
+    rays.reserve(n);
+    HitQueue hits;
+    hits.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec3 origin = 8.0f * glm::vec3(unit(rng), unit(rng), unit(rng)) - 4.0f;
+        rays.push({origin, glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) - 0.5f)}, glm::vec3(1.0f), 0, 0);
+        float u = unit(rng), v = (1.0f - u) * unit(rng);
+        uint32_t prim = i >= primitives && i % 9 == 4 ? kNoHit : i < primitives ? uint32_t(i) : uint32_t(rng() % primitives);
+        if (i % 13 == 5) {  // an edge's midpoint, where opposite vertex normals cancel
+            u = 0.5f, v = 0.0f;
+            if (i >= primitives && edge_prim != kNoHit) prim = edge_prim;
+        }
+        hits.set(i, {10.0f * unit(rng), prim, u, v});
+    }
+    std::size_t spheres = 0, smooth = 0, flat = 0;
+    for (TriangleTest test : {TriangleTest::moller_trumbore, TriangleTest::watertight}) {
+        scene.settings.accuracy.triangles = test;
+        for (Isa isa : supported_isas()) {
+            SurfaceChunk chunk;
+            for (std::size_t first = 0; first < n; first += SurfaceChunk::kSize) {
+                const std::size_t count = std::min(SurfaceChunk::kSize, n - first);
+                shade_kernels(isa).surface_points(scene, rays, hits, first, count, chunk);
+                for (std::size_t k = 0; k < count; ++k) {
+                    const Hit hit = hits.hit(first + k);
+                    if (!hit.found()) continue;
+                    const SurfacePoint expected = surface_at(scene, rays.ray(first + k), hit), actual = chunk.at(k);
+                    (hit.prim >= scene.triangles.size() ? spheres : expected.smooth ? smooth : flat) += 1;
+                    const std::string where = std::string(isa_name(isa)) + ", " + name_of(test) + ", primitive " +
+                                              std::to_string(hit.prim) + ", u " + std::to_string(hit.u) + ", v " +
+                                              std::to_string(hit.v) + " (reproduce: kernels_test --gtest_filter='ShadeKernels.Surface*')";
+                    EXPECT_EQ(std::memcmp(&expected.position, &actual.position, sizeof(glm::vec3)), 0) << where;
+                    EXPECT_EQ(std::memcmp(&expected.error, &actual.error, sizeof(glm::vec3)), 0) << where;
+                    EXPECT_EQ(std::memcmp(&expected.normal, &actual.normal, sizeof(glm::vec3)), 0) << where;
+                    EXPECT_EQ(std::memcmp(&expected.shading_normal, &actual.shading_normal, sizeof(glm::vec3)), 0) << where;
+                    EXPECT_EQ(expected.smooth, actual.smooth) << where;
+                    EXPECT_EQ(expected.material, actual.material) << where;
+                    if (::testing::Test::HasFailure()) return {smooth, flat};
+                }
+            }
+        }
+    }
+    EXPECT_GT(spheres, 0u);
+    return {smooth, flat};
+}
+
+// The hexroom with triangles at every orientation and scale, and a sliver.
 TEST(ShadeKernels, SurfacePointsEqualSurfaceAtBitForBit) {
     Scene scene = build_scene(test::hexroom(8, 8, 1));
     std::mt19937 rng(21);
@@ -347,48 +405,50 @@ TEST(ShadeKernels, SurfacePointsEqualSurfaceAtBitForBit) {
     }
     const glm::vec3 corner(1.0f, 2.0f, 3.0f);
     scene.triangles.push_back(corner, corner + glm::vec3(1e-30f, 0.0f, 0.0f), corner + glm::vec3(2e-30f, 0.0f, 0.0f), 0);
-    ASSERT_TRUE(has_flat_surfaces_only(scene));
-    const uint32_t primitives = uint32_t(scene.triangles.size() + scene.spheres.size());
-    const std::size_t n = 3 * SurfaceChunk::kSize + 7;
-    RayQueue rays;
-    rays.reserve(n);
-    HitQueue hits;
-    hits.reserve(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const glm::vec3 origin = 8.0f * glm::vec3(unit(rng), unit(rng), unit(rng)) - 4.0f;
-        rays.push({origin, glm::normalize(glm::vec3(unit(rng), unit(rng), unit(rng)) - 0.5f)}, glm::vec3(1.0f), 0, 0);
-        const float u = unit(rng), v = (1.0f - u) * unit(rng);
-        const uint32_t prim = i >= primitives && i % 9 == 4 ? kNoHit : i < primitives ? uint32_t(i) : uint32_t(rng() % primitives);
-        hits.set(i, {10.0f * unit(rng), prim, u, v});
-    }
-    std::size_t spheres = 0, triangles = 0;
-    for (TriangleTest test : {TriangleTest::moller_trumbore, TriangleTest::watertight}) {
-        scene.settings.accuracy.triangles = test;
-        for (Isa isa : supported_isas()) {
-            SurfaceChunk chunk;
-            for (std::size_t first = 0; first < n; first += SurfaceChunk::kSize) {
-                const std::size_t count = std::min(SurfaceChunk::kSize, n - first);
-                shade_kernels(isa).surface_points(scene, rays, hits, first, count, chunk);
-                for (std::size_t k = 0; k < count; ++k) {
-                    const Hit hit = hits.hit(first + k);
-                    if (!hit.found()) continue;
-                    const SurfacePoint expected = surface_at(scene, rays.ray(first + k), hit), actual = chunk.at(k);
-                    (hit.prim < scene.triangles.size() ? triangles : spheres) += 1;
-                    const std::string where = std::string(isa_name(isa)) + ", " + name_of(test) + ", primitive " +
-                                              std::to_string(hit.prim) + " (reproduce: kernels_test --gtest_filter='ShadeKernels.Surface*')";
-                    ASSERT_EQ(std::memcmp(&expected.position, &actual.position, sizeof(glm::vec3)), 0) << where;
-                    ASSERT_EQ(std::memcmp(&expected.error, &actual.error, sizeof(glm::vec3)), 0) << where;
-                    ASSERT_EQ(std::memcmp(&expected.normal, &actual.normal, sizeof(glm::vec3)), 0) << where;
-                    ASSERT_EQ(expected.material, actual.material) << where;
-                    ASSERT_FALSE(expected.smooth) << where;
-                }
-            }
-        }
-    }
-    EXPECT_GT(triangles, 0u);
-    EXPECT_GT(spheres, 0u);
+    ASSERT_TRUE(scene.shading_normals.empty());
+    const auto [smooth, flat] = expect_surface_points_equal_surface_at(scene, 22);
+    EXPECT_EQ(smooth, 0u);
+    EXPECT_GT(flat, 0u);
     // The sliver's normal is 0, as TriangleSoA::normal gives it.
     EXPECT_EQ(scene.triangles.normal(scene.triangles.size() - 1), glm::vec3(0.0f));
+}
+
+// The hexroom with meshes that have vertex normals (random, some wound against the geometry, some
+// opposite at an edge so they cancel at its midpoint, one huge and one tiny) beside one without:
+// the shading normals, and which hits are smooth, as ShadingNormalTable::at gives them.
+TEST(ShadeKernels, SurfacePointsWithVertexNormalsEqualSurfaceAtBitForBit) {
+    SceneDescription d = test::hexroom(8, 8, 1);
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (float scale : {1.0f, 1e-3f, 1e4f}) {
+        TriangleMesh m = test::icosphere(1, scale, glm::vec3(5.0f, 0.0f, 0.0f));
+        for (std::size_t k = 0; k < m.vertices.size(); ++k) {
+            const glm::vec3 outward = glm::normalize(m.vertices[k] - glm::vec3(5.0f, 0.0f, 0.0f));
+            m.normals.push_back(k % 5 == 0 ? -outward : k % 5 == 1 ? random_unit(rng) : outward);
+        }
+        d.meshes.push_back(m);
+    }
+    TriangleMesh cancelling;  // normals opposite at vertices 0 and 1: they cancel at u = 0.5, v = 0
+    cancelling.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    cancelling.triangles = {{0, 1, 2}};
+    cancelling.normals = {{0, 0, 1}, {0, 0, -1}, {0, 0, 1}};
+    d.meshes.push_back(cancelling);
+    d.meshes.push_back(test::icosphere(1, 0.5f, glm::vec3(2.0f, 1.0f, 0.0f)));  // flat: no normals
+    Scene scene = build_scene(d);
+    ASSERT_FALSE(scene.shading_normals.empty());
+    uint32_t cancelling_prim = kNoHit;
+    for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
+        const TriangleSoA::Corner c = scene.triangles.corner(i);
+        if (c.v0 == glm::vec3(0.0f) && c.e1 == glm::vec3(1, 0, 0) && c.e2 == glm::vec3(0, 1, 0)) cancelling_prim = i;
+    }
+    ASSERT_NE(cancelling_prim, kNoHit);
+    const glm::vec3 midpoint_normal = scene.shading_normals.at(scene.triangles, cancelling_prim, 0.5f, 0.0f, glm::vec3(0, 0, 1));
+    EXPECT_EQ(midpoint_normal, glm::vec3(0, 0, 1));  // the geometric normal where the blend cancels
+    const auto [smooth, flat] = expect_surface_points_equal_surface_at(scene, 24, cancelling_prim);
+    // Both sides: hits the vertex normals shade, and hits on the room, the flat mesh and where
+    // the normals cancel, which keep the geometric normal.
+    EXPECT_GT(smooth, 0u);
+    EXPECT_GT(flat, 0u);
 }
 
 // Vertices past the queue's count are never pushed, whatever the padding lanes hold.

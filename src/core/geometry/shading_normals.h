@@ -38,6 +38,9 @@ public:
     // Out of line: inlined into surface_at() it made g++ stop inlining surface_at() itself,
     // which costs every flat scene.
     glm::vec3 at(const TriangleSoA& t, std::size_t i, float u, float v, const glm::vec3& geometric) const;
+    // The normals as stored, one per vertex of the TriangleSoA, NaN in a flat mesh's: what the
+    // SIMD surface kernel gathers (kernels/shading/surface_points.h).
+    const glm::vec3* per_vertex() const { return normals_.data(); }
     // Triangle i's three vertex normals; false (and nothing written) for a flat triangle.
     bool vertex_normals(const TriangleSoA& t, std::size_t i, glm::vec3 out[3]) const;
 

@@ -22,7 +22,7 @@ struct ShadeKernels {
     Isa isa;
     int width;
     // surface_at for hits [first, first + count) of the queue (count at most SurfaceChunk::kSize),
-    // into the chunk from its start, in a scene with flat surfaces only (has_flat_surfaces_only,
+    // into the chunk from its start, in a scene without instances (surface_kernel_covers,
     // kernels/shading/surface_points.h).
     void (*surface_points)(const Scene&, const RayQueue&, const HitQueue&, std::size_t first, std::size_t count, SurfaceChunk&);
     // continue_path for every vertex of the queue, in its order; the paths that go on are appended

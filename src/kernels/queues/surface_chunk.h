@@ -1,9 +1,10 @@
 #pragma once
 // The surface points (SurfacePoint, core/scene/scene.h) of a chunk of a shade stage's hits,
 // computed N at a time by the surface kernel (kernels/shading/surface_points.h) before the shade
-// loop reads them, in scenes whose every hit is on a flat triangle or a sphere (no vertex
-// normals, no instances: Scene::flat_surfaces()). One hit at a time, the triangle's normal (a
-// cross product, a square root, three divisions) and the sphere's (a square root, a division)
+// loop reads them, in scenes whose every hit is on a triangle or a sphere of the scene's own
+// lists (no instances: surface_kernel_covers). One hit at a time, the triangle's normal (a cross
+// product, a square root, three divisions), its interpolated vertex normal (three gathers of a
+// normal, a square root, three divisions) and the sphere's normal (a square root, a division)
 // were dependent chains in every iteration of the loop.
 
 #include <cstddef>
@@ -15,7 +16,7 @@
 namespace wt {
 
 // Whether surface_at's work for every hit of the scene is the surface kernel's.
-inline bool has_flat_surfaces_only(const Scene& scene) { return scene.shading_normals.empty() && scene.instances.empty(); }
+inline bool surface_kernel_covers(const Scene& scene) { return scene.instances.empty(); }
 
 struct SurfaceChunk {
     // Hits per chunk: a multiple of every width; the chunk stays in L1.
@@ -23,14 +24,19 @@ struct SurfaceChunk {
 
     AlignedVector<float> px, py, pz, ex, ey, ez, nx, ny, nz;
     AlignedVector<uint32_t> material;
+    // The shading normals and SurfacePoint::smooth, written only in a scene with vertex normals
+    // (`shading_normals`); elsewhere the shading normal is the normal.
+    AlignedVector<float> snx, sny, snz;
+    AlignedVector<uint32_t> smooth;
+    bool shading_normals = false;
 
     SurfaceChunk() {
-        for (auto* a : {&px, &py, &pz, &ex, &ey, &ez, &nx, &ny, &nz}) a->resize(kSize);
-        material.resize(kSize);
+        for (auto* a : {&px, &py, &pz, &ex, &ey, &ez, &nx, &ny, &nz, &snx, &sny, &snz}) a->resize(kSize);
+        material.resize(kSize), smooth.resize(kSize);
     }
-    static constexpr std::size_t kBytes = kSize * 10 * 4;
+    static constexpr std::size_t kBytes = kSize * 14 * 4;
 
-    // Hit `k` of the chunk, as surface_at gives it for a flat triangle or a sphere.
+    // Hit `k` of the chunk, as surface_at gives it.
     SurfacePoint at(std::size_t k) const {
         SurfacePoint s;
         s.position = {px[k], py[k], pz[k]};
@@ -39,6 +45,10 @@ struct SurfaceChunk {
         s.shading_normal = s.normal;
         s.material = material[k];
         s.smooth = false;
+        if (shading_normals) {
+            s.shading_normal = {snx[k], sny[k], snz[k]};
+            s.smooth = smooth[k] != 0;
+        }
         return s;
     }
 };

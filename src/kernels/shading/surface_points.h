@@ -1,10 +1,11 @@
 #pragma once
-// surface_at (core/scene/scene.h) for a chunk of hits, N at a time: on flat triangles, the point
+// surface_at (core/scene/scene.h) for a chunk of hits, N at a time: on triangles, the point
 // from the barycentrics, its error bound (with the watertight test's floor where the scene uses
-// it) and the unit normal of the edges' cross product; on spheres, the point projected back onto
-// the sphere, its bound and the outward normal. Bit for bit the scalar code, in the way of
-// diffuse_continuation.h (tests/shade_kernels_test.cpp). Only for scenes without vertex normals
-// and instances (has_flat_surfaces_only); lanes whose ray missed are left unspecified.
+// it), the unit normal of the edges' cross product and, in a scene with vertex normals, the
+// shading normal blended from them (ShadingNormalTable::at, blend_normals); on spheres, the
+// point projected back onto the sphere, its bound and the outward normal. Bit for bit the scalar
+// code, in the way of diffuse_continuation.h (tests/shade_kernels_test.cpp). Only for scenes
+// without instances (surface_kernel_covers); lanes whose ray missed are left unspecified.
 
 #include <cstdint>
 
@@ -28,10 +29,34 @@ inline Lanes3<N> magnitude(const Lanes3<N>& v) {
     return {simd::abs(v.x), simd::abs(v.y), simd::abs(v.z)};
 }
 
-// Hits [first, first + count) of the queue, count at most SurfaceChunk::kSize, into `out` from 0.
+// ShadingNormalTable::at for the `triangle` lanes: the vertex normals gathered (a flat mesh's
+// hold NaN), blended with the barycentrics' weights in blend_normals' order and divided by
+// their length, or `geometric` where the blend cancels, is not finite or the mesh is flat.
 template <int N>
-void surface_points(const Scene& scene, const RayQueue& rays, const HitQueue& hits, std::size_t first, std::size_t count,
-                    SurfaceChunk& out) {
+inline Lanes3<N> blended_vertex_normal(const Scene& scene, vbool<N> triangle, vint<N> i0, vint<N> i1, vint<N> i2, vfloat<N> u,
+                                       vfloat<N> v, const Lanes3<N>& geometric) {
+    const float* normals = reinterpret_cast<const float*>(scene.shading_normals.per_vertex());
+    const auto normal = [&](vint<N> vertex) {
+        const vint<N> at = vertex * vint<N>(3);  // glm::vec3: three floats
+        return Lanes3<N>{vfloat<N>::gather(triangle, normals, at), vfloat<N>::gather(triangle, normals + 1, at),
+                         vfloat<N>::gather(triangle, normals + 2, at)};
+    };
+    const Lanes3<N> n0 = normal(i0), n1 = normal(i1), n2 = normal(i2);
+    const vfloat<N> w = 1.0f - u - v;
+    const Lanes3<N> blended{w * n0.x + u * n1.x + v * n2.x, w * n0.y + u * n1.y + v * n2.y, w * n0.z + u * n1.z + v * n2.z};
+    const vfloat<N> length2 = dot(blended, blended);
+    const vfloat<N> length = simd::sqrt(length2);
+    // Below 1e-12 the direction is the rounding noise of the cancellation; infinity - infinity
+    // is NaN, so the second test is !isfinite(length2); a flat mesh's NaN fails the first.
+    const vbool<N> usable = (length2 > 1e-12f) & ((length2 - length2) == 0.0f);
+    return select(usable, Lanes3<N>{blended.x / length, blended.y / length, blended.z / length}, geometric);
+}
+
+// Hits [first, first + count) of the queue, count at most SurfaceChunk::kSize, into `out` from 0.
+// kVertexNormals: the scene has a ShadingNormalTable, and the shading normals are computed too.
+template <int N, bool kVertexNormals>
+void surface_points_with(const Scene& scene, const RayQueue& rays, const HitQueue& hits, std::size_t first, std::size_t count,
+                         SurfaceChunk& out) {
     const TriangleSoA& t = scene.triangles;
     const SphereSoA& s = scene.spheres;
     const vint<N> triangle_count(int32_t(t.size()));
@@ -47,10 +72,12 @@ void surface_points(const Scene& scene, const RayQueue& rays, const HitQueue& hi
         const vbool<N> sphere = found & ~triangle;
 
         // Triangles: v0 + u e1 + v e2 from the vertices, triangle_point_error, TriangleSoA::normal.
-        const auto corner = [&](const AlignedVector<uint32_t>& index) {
-            return gather3<N>(triangle, t.px, t.py, t.pz, vint<N>::gather(triangle, reinterpret_cast<const int32_t*>(index.data()), prim));
+        const auto vertex = [&](const AlignedVector<uint32_t>& index) {
+            return vint<N>::gather(triangle, reinterpret_cast<const int32_t*>(index.data()), prim);
         };
-        const Lanes3<N> v0 = corner(t.i0), v1 = corner(t.i1), v2 = corner(t.i2);
+        const vint<N> i0 = vertex(t.i0), i1 = vertex(t.i1), i2 = vertex(t.i2);
+        const auto corner = [&](vint<N> index) { return gather3<N>(triangle, t.px, t.py, t.pz, index); };
+        const Lanes3<N> v0 = corner(i0), v1 = corner(i1), v2 = corner(i2);
         const Lanes3<N> e1{v1.x - v0.x, v1.y - v0.y, v1.z - v0.z}, e2{v2.x - v0.x, v2.y - v0.y, v2.z - v0.z};
         const vfloat<N> u = load(hits.u), v = load(hits.v);
         const Lanes3<N> ue1{u * e1.x, u * e1.y, u * e1.z}, ve2{v * e2.x, v * e2.y, v * e2.z};
@@ -95,11 +122,27 @@ void surface_points(const Scene& scene, const RayQueue& rays, const HitQueue& hi
         store3(out.px, out.py, out.pz, triangle_position, sphere_position);
         store3(out.ex, out.ey, out.ez, triangle_error, sphere_error);
         store3(out.nx, out.ny, out.nz, triangle_normal, sphere_normal);
+        if constexpr (kVertexNormals) {
+            const Lanes3<N> shading = blended_vertex_normal<N>(scene, triangle, i0, i1, i2, u, v, triangle_normal);
+            store3(out.snx, out.sny, out.snz, shading, sphere_normal);
+            // SurfacePoint::smooth: shading_normal != normal, glm's test (any coordinate differs).
+            const vbool<N> smooth =
+                triangle & ((shading.x != triangle_normal.x) | (shading.y != triangle_normal.y) | (shading.z != triangle_normal.z));
+            vint<N>::store(reinterpret_cast<int32_t*>(out.smooth.data() + k), simd::select(smooth, vint<N>(1), vint<N>(0)));
+        }
         const vint<N> material =
             simd::select(triangle, vint<N>::gather(triangle, reinterpret_cast<const int32_t*>(t.material.data()), prim),
                          vint<N>::gather(sphere, reinterpret_cast<const int32_t*>(s.material.data()), sphere_index));
         vint<N>::store(reinterpret_cast<int32_t*>(out.material.data() + k), material);
     }
+}
+
+template <int N>
+void surface_points(const Scene& scene, const RayQueue& rays, const HitQueue& hits, std::size_t first, std::size_t count,
+                    SurfaceChunk& out) {
+    out.shading_normals = !scene.shading_normals.empty();
+    if (out.shading_normals) surface_points_with<N, true>(scene, rays, hits, first, count, out);
+    else surface_points_with<N, false>(scene, rays, hits, first, count, out);
 }
 
 }  // namespace WT_SIMD_ISA

@@ -32,7 +32,7 @@ namespace wt {
 // always with kRough: a scene with a lights list is rare enough to test its materials at run
 // time, and a fourth set of instantiations would cost every build for nothing).
 // The SIMD shade kernels (kernels/shading, the ISA's widest vector) take the common vertices: in
-// scenes of flat triangles and spheres alone the surface points, a chunk of hits at a time; the
+// scenes without instances the surface points, a chunk of hits at a time; the
 // diffuse vertices' light samples and continuations (flat, or folded about a shading normal),
 // for which the loop draws the random
 // numbers, picks the light points and queues them in `chunks.diffuse`, and the kernels append
@@ -51,7 +51,7 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
     // One lane gains nothing from a kernel and pays for its queue: the scalar kernels' loop is the
     // plain one (their width-1 shade kernels are the tests' and the perf gate's reference).
     const bool vector_kernels = kernels.width > 1;
-    const bool flat_surfaces = vector_kernels && has_flat_surfaces_only(scene);
+    const bool surface_kernel = vector_kernels && surface_kernel_covers(scene);
     SurfaceChunk& surfaces = chunks.surfaces;
     DiffuseVertexQueue& diffuse = chunks.diffuse;
     next_rays.count = 0;
@@ -73,7 +73,7 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
     [[maybe_unused]] std::optional<Material> textured;  // kRough: the hit's material with its textures looked up
     for (std::size_t i = 0; i < rays.count; ++i) {
         const std::size_t in_chunk = i % SurfaceChunk::kSize;
-        if (flat_surfaces && in_chunk == 0)
+        if (surface_kernel && in_chunk == 0)
             kernels.surface_points(scene, rays, hits, i, std::min(SurfaceChunk::kSize, rays.count - i), surfaces);
         const Hit hit = hits.hit(i);
         if constexpr (!kListedLights) {
@@ -92,7 +92,7 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
         const PathSeed path{paths.key[slot], paths.sample[slot]};
         const glm::vec3 throughput = rays.throughput(i);
         // (Not const: a normal map may change its shading normal.)
-        SurfacePoint surface = flat_surfaces ? surfaces.at(in_chunk) : surface_at(scene, ray, hit);
+        SurfacePoint surface = surface_kernel ? surfaces.at(in_chunk) : surface_at(scene, ray, hit);
         // Textured scenes run the kRough loop (stage_shade.cpp): without it, the loop is as it was.
         const Material& m = kRough ? material_at(scene, hit, surface, ray, bounce == 0, textured)
                                    : scene.materials[surface.material];
