@@ -10,13 +10,6 @@
 
 namespace wt {
 
-void add_reference_error_options(CLI::App& cmd, ReferenceErrorOptions& o) {
-    cmd.add_option("--reference", o.reference_path,
-                   "Reference image (linear EXR) of the render's size: print the error against it at each pass");
-    cmd.add_option("--error-csv", o.csv_path,
-                   "With --reference: write seconds,spp,rmse,rel_mse rows (one per pass) to this CSV file");
-}
-
 ReferenceErrorLog::ReferenceErrorLog(const ReferenceErrorOptions& options, int width, int height) : options_(options) {
     if (!options.reference_path) {
         if (options.csv_path) throw std::runtime_error("--error-csv " + *options.csv_path + ": needs --reference");

@@ -3,26 +3,17 @@
 // at each progressive pass and at the end, printed and logged as CSV rows (seconds, spp, rmse,
 // rel_mse), one per pass.
 
-#include <optional>
 #include <ostream>
-#include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "core/film/film.h"
 #include "core/image_io/rgb_image.h"
 #include "core/image_metrics/image_metrics.h"
 #include "kernels/renderer.h"
+#include "tools/render/reference_error_options.h"
 #include "tools/render/render_passes.h"
 
 namespace wt {
-
-struct ReferenceErrorOptions {
-    std::optional<std::string> reference_path, csv_path;
-};
-
-void add_reference_error_options(CLI::App& render_command, ReferenceErrorOptions& options);
 
 class ReferenceErrorLog {
 public:
