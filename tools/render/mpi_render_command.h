@@ -4,7 +4,7 @@
 
 #include "core/checkpoint/checkpoint.h"
 #include "kernels/renderer.h"
-#include "tools/render/render_command.h"
+#include "tools/render/render_command_options.h"
 
 namespace wt {
 

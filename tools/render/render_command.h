@@ -1,52 +1,18 @@
 #pragma once
-// `wavetrace render`: its options, as parsed from the command line, and the command itself.
-
-#include <optional>
-#include <string>
-#include <vector>
+// `wavetrace render`: the command itself, run on the options its command line gave
+// (render_command_options.h).
 
 #include <CLI/CLI.hpp>
 
-#include "kernels/renderer.h"
 #include "tools/cli/subcommand.h"
-#include "tools/render/reference_error.h"
+#include "tools/render/render_command_options.h"
 
 namespace wt {
-
-struct RenderCommandOptions {
-    std::string scene_path;
-    std::vector<std::string> outputs;
-    // Overrides of the scene's render settings; unset means "as the scene says".
-    std::optional<int> spp, shadow_rays, width, height;
-    std::optional<uint64_t> seed;
-    std::optional<std::string> triangle_test, sphere_test, fresnel, multiple_scattering;
-    std::optional<std::string> sampler, light_sampling, light_selection, caustics;
-    std::optional<float> clamp_indirect;
-    std::optional<double> light_paths_per_pixel;
-    std::optional<float> photon_radius;
-    std::optional<float> adaptive_threshold;
-    std::optional<int> adaptive_min_spp;
-    RenderOptions render;
-    std::string integrator_name = "wavefront";
-    std::string isa_name = "auto";
-    std::string accel_name = "auto";
-    std::optional<std::string> debug_sample;  // "X,Y,S": replay one sample instead of rendering
-    std::optional<std::string> debug_light_path;  // "I,S": replay one light path instead of rendering
-    std::optional<double> time_limit, write_every;  // seconds
-    std::optional<std::string> checkpoint, resume, samples;  // samples: "BEGIN:END", a partial render
-    double checkpoint_every = 300.0;                         // seconds
-    std::string aov_list;                           // --aov: "albedo,normal,..." or "all"; empty: none
-    ReferenceErrorOptions error;                    // --reference, --error-csv
-    bool quiet = false;
-};
-
-// Registers the subcommand's options on `app`, writing into `options`.
-CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& options);
 
 // Runs the command; returns the process exit code. Errors are printed, never thrown.
 int run_render_command(RenderCommandOptions& options);
 
-// Both of the above, the options owned by the returned command.
+// add_render_command and run_render_command in one, the options owned by the returned command.
 Subcommand render_subcommand(CLI::App& app);
 
 }  // namespace wt
