@@ -113,6 +113,8 @@ test-tsan: deps
 	cd $(TSAN_BUILD_DIR) && TSAN_OPTIONS=halt_on_error=1 ctest --output-on-failure -j $(JOBS) -R '$(TSAN_TESTS)'
 
 # libFuzzer needs clang: clang-14 and its runtime libraries from Debian (sanitizer-deps).
+# Only the six targets are built, and they link the core and the command-line parser, none of the
+# kernels (tests/fuzz/CMakeLists.txt): the build compiles no unit of src/kernels.
 fuzz: sanitizer-deps
 	$(SANITIZER_CC) cmake -S . -B $(FUZZ_BUILD_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWAVETRACE_FUZZ=ON -DWAVETRACE_BUILD_TESTS=OFF
 	cmake --build $(FUZZ_BUILD_DIR) -j $(SANITIZER_JOBS) --target fuzz_scene fuzz_cli fuzz_obj fuzz_ply fuzz_gltf fuzz_checkpoint

@@ -10,7 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "tools/cli/cli_values.h"
-#include "tools/render/render_command.h"
+#include "tools/render/render_command_options.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     std::vector<std::string> args;
