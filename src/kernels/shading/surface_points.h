@@ -52,16 +52,69 @@ inline Lanes3<N> blended_vertex_normal(const Scene& scene, vbool<N> triangle, vi
     return select(usable, Lanes3<N>{blended.x / length, blended.y / length, blended.z / length}, geometric);
 }
 
+// The hit triangles' data a few vectors ahead of the arithmetic: the vertex indices two vectors
+// ahead, and the vertices (and their normals) one vector ahead, whose indices were asked for the
+// vector before. In a mesh past the caches every hit's triangle is a miss of its own (the
+// intersection kernels read the leaf blocks, not these arrays), and the kernel's gathers wait on
+// the indices and then on the vertices; asked for early, the misses of several vectors overlap.
+// Only past kSurfacePrefetchBytes: in a scene whose triangles stay in the caches the prefetches
+// are instructions for nothing.
+constexpr std::size_t kSurfacePrefetchBytes = std::size_t(16) << 20;
+
+class TriangleDataPrefetch {
+public:
+    TriangleDataPrefetch(const Scene& scene, const HitQueue& hits, std::size_t first, std::size_t count)
+        : t_(scene.triangles),
+          normals_(scene.shading_normals.empty() ? nullptr : scene.shading_normals.per_vertex()),
+          prim_(hits.prim.data() + first),
+          count_(count) {}
+
+    // The bytes a hit's surface point reads from: per triangle its indices and material, per
+    // vertex its position and normal.
+    static bool past_the_caches(const Scene& scene) {
+        const std::size_t bytes = scene.triangles.size() * 4 * sizeof(uint32_t) +
+                                  scene.triangles.vertex_count() * 3 * sizeof(float) + scene.shading_normals.bytes();
+        return bytes > kSurfacePrefetchBytes;
+    }
+
+    // Always inlined: a function of prefetches alone is "pure" to g++ 12, and a call to it whose
+    // result is unused is dropped, prefetches and all.
+    [[gnu::always_inline]] void indices(std::size_t k, std::size_t lanes) const {
+        for (std::size_t j = k; j < k + lanes && j < count_; ++j)
+            if (const uint32_t p = prim_[j]; p < t_.size())
+                __builtin_prefetch(&t_.i0[p]), __builtin_prefetch(&t_.i1[p]), __builtin_prefetch(&t_.i2[p]),
+                    __builtin_prefetch(&t_.material[p]);
+    }
+    [[gnu::always_inline]] void vertices(std::size_t k, std::size_t lanes) const {
+        for (std::size_t j = k; j < k + lanes && j < count_; ++j)
+            if (const uint32_t p = prim_[j]; p < t_.size())
+                for (const uint32_t vertex : {t_.i0[p], t_.i1[p], t_.i2[p]}) {
+                    __builtin_prefetch(&t_.px[vertex]), __builtin_prefetch(&t_.py[vertex]), __builtin_prefetch(&t_.pz[vertex]);
+                    if (normals_) __builtin_prefetch(&normals_[vertex]);
+                }
+    }
+
+private:
+    const TriangleSoA& t_;
+    const glm::vec3* normals_;
+    const uint32_t* prim_;
+    std::size_t count_;
+};
+
 // Hits [first, first + count) of the queue, count at most SurfaceChunk::kSize, into `out` from 0.
 // kVertexNormals: the scene has a ShadingNormalTable, and the shading normals are computed too.
-template <int N, bool kVertexNormals>
+// kPrefetch: the triangles are past the caches (TriangleDataPrefetch).
+template <int N, bool kVertexNormals, bool kPrefetch>
 void surface_points_with(const Scene& scene, const RayQueue& rays, const HitQueue& hits, std::size_t first, std::size_t count,
                          SurfaceChunk& out) {
     const TriangleSoA& t = scene.triangles;
     const SphereSoA& s = scene.spheres;
     const vint<N> triangle_count(int32_t(t.size()));
     const bool watertight = scene.settings.accuracy.triangles == TriangleTest::watertight;
+    const TriangleDataPrefetch prefetch(scene, hits, first, count);
+    if constexpr (kPrefetch) prefetch.indices(0, 2 * N), prefetch.vertices(0, N);
     for (std::size_t k = 0; k < count; k += N) {
+        if constexpr (kPrefetch) prefetch.indices(k + 2 * N, N), prefetch.vertices(k + N, N);
         const std::size_t i = first + k;
         const int lanes = count - k < std::size_t(N) ? int(count - k) : N;
         const auto load = [&](const AlignedVector<float>& a) { return vfloat<N>::load_partial(a.data() + i, lanes, 0.0f); };
@@ -141,8 +194,11 @@ template <int N>
 void surface_points(const Scene& scene, const RayQueue& rays, const HitQueue& hits, std::size_t first, std::size_t count,
                     SurfaceChunk& out) {
     out.shading_normals = !scene.shading_normals.empty();
-    if (out.shading_normals) surface_points_with<N, true>(scene, rays, hits, first, count, out);
-    else surface_points_with<N, false>(scene, rays, hits, first, count, out);
+    const bool prefetch = TriangleDataPrefetch::past_the_caches(scene);
+    if (out.shading_normals && prefetch) surface_points_with<N, true, true>(scene, rays, hits, first, count, out);
+    else if (out.shading_normals) surface_points_with<N, true, false>(scene, rays, hits, first, count, out);
+    else if (prefetch) surface_points_with<N, false, true>(scene, rays, hits, first, count, out);
+    else surface_points_with<N, false, false>(scene, rays, hits, first, count, out);
 }
 
 }  // namespace WT_SIMD_ISA
