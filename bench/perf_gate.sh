@@ -34,6 +34,7 @@ for isa in scalar sse4 avx2; do
   done
 done
 cases+=("build" "render/scalar" "render/avx2" "shade/scalar" "shade/sse4" "shade/avx2")
+cases+=("shade/scalar/smooth" "shade/sse4/smooth" "shade/avx2/smooth")
 
 measure() {  # CASE -> "INSTRUCTIONS CHECKSUM": the collected region's count, the workload's checksum
   local args out count checksum
@@ -99,6 +100,7 @@ for query in closest any; do
 done
 same_result render/scalar render/avx2
 same_result shade/{scalar,sse4,avx2}
+same_result shade/{scalar,sse4,avx2}/smooth
 
 # Ratios within this run: the SIMD kernels must keep their advantage over scalar.
 ratio() { awk -v a="${measured[$1]}" -v b="${measured[$2]}" 'BEGIN {printf "%.2f", a / b}'; }
@@ -115,6 +117,8 @@ check_ratio render/scalar render/avx2 1.3
 check_ratio intersect/scalar/bvh/closest intersect/avx2/bvh/closest 2
 check_ratio shade/scalar shade/avx2 4
 check_ratio shade/scalar shade/sse4 1.8  # SSE4 has no gather: the surface kernel loads lane by lane
+check_ratio shade/scalar/smooth shade/avx2/smooth 4
+check_ratio shade/scalar/smooth shade/sse4/smooth 1.8
 
 if [ "$failures" -gt 0 ]; then
   echo "perf_gate: $failures check(s) failed. If the change is intended, run bench/perf_gate.sh build --update and commit the baseline."

@@ -17,6 +17,9 @@
 //                                                   on the diffuse vertices one light sample
 //                                                   each and the continuation past the roulette's
 //                                                   start
+//   perf_gate_workload SCENE shade ISA smooth       the same on the BVH cases' scene, whose sphere
+//                                                   has vertex normals: shading normals blended,
+//                                                   the folded BSDF at its vertices
 
 #include <algorithm>
 #include <cstdio>
@@ -73,7 +76,7 @@ int usage() {
     std::fprintf(stderr, "usage: perf_gate_workload SCENE intersect ISA raypacket|primpacket|bvh|bvhpackets|bvhinterleaved closest|any\n"
                          "       perf_gate_workload SCENE build\n"
                          "       perf_gate_workload SCENE render ISA [AOV,...]\n"
-                         "       perf_gate_workload SCENE shade ISA\n");
+                         "       perf_gate_workload SCENE shade ISA [smooth]\n");
     return 2;
 }
 
@@ -139,13 +142,21 @@ int main(int argc, char** argv) {
         sum.print();
         return 0;
     }
-    if (what == "shade" && argc == 4) {
-        const Scene scene = build_scene(description);
+    const bool smooth = argc == 5 && std::string(argv[4]) == "smooth";
+    if (what == "shade" && (argc == 4 || smooth)) {
+        // smooth: the BVH cases' scene, whose sphere has vertex normals, found through its tree.
+        const Scene scene = smooth ? meshed_scene(description) : build_scene(description);
         const Rays rays = incoherent_rays(20000);
         const std::size_t n = rays.ox.size();
         std::vector<float> t(n), u(n), v(n);
         std::vector<uint32_t> prim(n);
-        intersect_kernels(Isa::scalar).closest_raypacket(FlatScene(scene).view(), rays.view(), {t.data(), u.data(), v.data(), prim.data()});
+        const HitView found{t.data(), u.data(), v.data(), prim.data()};
+        if (smooth) {
+            const Bvh bvh = build_bvh(scene, {8, 8, 1});
+            intersect_kernels(Isa::scalar).closest_bvh(bvh_view(bvh), rays.view(), found);
+        } else {
+            intersect_kernels(Isa::scalar).closest_raypacket(FlatScene(scene).view(), rays.view(), found);
+        }
         DiffuseVertexQueue queue;
         queue.reserve(n, 1);
         constexpr uint32_t kBounce = 3;  // past rr_start_bounce: the roulette runs
@@ -183,13 +194,19 @@ int main(int argc, char** argv) {
             k.surface_points(scene, queued_rays, queued_hits, first, count, surfaces);
             CALLGRIND_TOGGLE_COLLECT;
             for (std::size_t i = 0; i < count; ++i)
-                if (prim[first + i] != kNoHit) sum.add(surfaces.px[i]), sum.add(surfaces.ny[i]), sum.add(surfaces.material[i]);
+                if (prim[first + i] != kNoHit) {
+                    sum.add(surfaces.px[i]), sum.add(surfaces.ny[i]), sum.add(surfaces.material[i]);
+                    if (smooth) sum.add(surfaces.sny[i]), sum.add(surfaces.smooth[i]);
+                }
             CALLGRIND_TOGGLE_COLLECT;
         }
         k.sample_diffuse_lights(queue, {1, false, std::numeric_limits<float>::infinity()}, shadows);
         k.continue_diffuse(queue, {true, false, false}, next);
         CALLGRIND_TOGGLE_COLLECT;
-        std::printf("vertices %zu, shadow rays %zu, continued %zu\n", queue.count, shadows.count, next.count);
+        const std::size_t smooth_vertices =
+            std::count_if(queue.flags.begin(), queue.flags.begin() + queue.count, [](uint8_t f) { return f & DiffuseVertexQueue::kSmooth; });
+        std::printf("vertices %zu (smooth %zu), shadow rays %zu, continued %zu\n", queue.count, smooth_vertices, shadows.count,
+                    next.count);
         for (std::size_t i = 0; i < next.count; ++i) {
             sum.add(next.path[i]), sum.add(next.ox[i]), sum.add(next.oy[i]), sum.add(next.oz[i]);
             sum.add(next.dx[i]), sum.add(next.dy[i]), sum.add(next.dz[i]);
