@@ -2,18 +2,21 @@
 // N rays at a time through the wide BVH, for coherent rays (camera rays): the packet visits a
 // node when any of its active rays enters a child's box, and a leaf's primitives are tested
 // against all N rays at once, one primitive broadcast at a time, as the flat ray-packet kernels
-// do. Incoherent rays would split the packet at once and pay for N rays at every node; they
+// do; a leaf of triangles that few of the rays entered, ray by ray against all its triangles
+// at once, as the single-ray walk does. Incoherent rays would split the packet at once and pay for N rays at every node; they
 // use one ray at a time (bvh_traverse.h). Returns the same bits as the other kernels: the same
 // primitive tests, ties on t broken by primitive id, and the same conservative box test
 // (Ize's far-slab factor, boxes padded for rounding).
 
 #include <cstdint>
+#include <type_traits>
 
 #include "core/base/accuracy.h"
 #include "kernels/accel/brute_force.h"
 #include "kernels/accel/bvh_traverse.h"
 #include "kernels/accel/bvh_view.h"
 #include "kernels/accel/query.h"
+#include "kernels/accel/single_ray.h"
 #include "kernels/primitives/lanes.h"
 #include "kernels/primitives/sphere_lanes.h"
 #include "kernels/primitives/triangle_lanes.h"
@@ -100,8 +103,62 @@ WT_KERNEL_INLINE void test_leaf_packet(const BvhView& bvh, uint32_t ref, const R
         if (kind == BvhLeafKind::parallelogram) test(PlanarShape<Planar::parallelogram>{});
 }
 
+// One lane of a packet as test_planar_run's state (single_ray.h): a leaf's triangles against that
+// lane's ray alone, every hit recorded into the packet's state as the packet's own test records
+// it. The same primitive test per ray and triangle, and the same (t, id) comparison: the same bits.
+// The limit is the lane's at the leaf's start; a hit past a nearer one found in the same leaf
+// loses in record.
+template <int N>
+struct PacketLane {
+    TreePacketState<Query::closest, N>& packet;
+    int index;
+    vbool<N> lane;
+    float limit;
+
+    [[gnu::always_inline]] PacketLane(TreePacketState<Query::closest, N>& p, int i)
+        : packet(p), index(i), lane(vint<N>::step() == vint<N>(i)), limit(p.limit()[i]) {}
+    bool done() const { return false; }
+    template <int L>
+    [[gnu::always_inline]] void record(const vbool<L>& hit, const LaneHits<L>& h, const vint<L>& ids) {
+        for (uint32_t bits = simd::movemask(hit); bits; bits &= bits - 1) {
+            const int j = __builtin_ctz(bits);
+            packet.record(lane, {vfloat<N>(h.t[j]), vfloat<N>(h.u_num[j]), vfloat<N>(h.v_num[j]), vfloat<N>(h.den[j])},
+                          vint<N>(ids[j]));
+        }
+        limit = packet.limit()[index];
+    }
+};
+
+// A leaf of triangles whose box few of the packet's lanes entered (`lanes`, a bit per lane): each
+// of those rays against all the leaf's triangles at once (the single-ray leaf test), in place of
+// every triangle against all N lanes. Deep in the tree a camera packet's rays spread over several
+// leaves, so most leaves are entered by a few lanes.
+template <TriangleTest T, int N>
+WT_KERNEL_INLINE void test_leaf_lanes(const BvhView& bvh, uint32_t ref, const RayPacket<N>& r, uint32_t lanes,
+                                      TreePacketState<Query::closest, N>& state) {
+    constexpr int L = kLeafLanes<N>;
+    constexpr uint32_t rows = T == TriangleTest::watertight ? kWatertightRows : kMollerTrumboreRows;
+    const uint32_t count = ((ref >> kBvhCountShift) & 7u) + 1u;
+    const TriangleBlock<T> triangles{bvh.leaves + std::size_t(ref & kBvhFirstMask) * rows, count};
+    for (; lanes; lanes &= lanes - 1) {
+        const int i = __builtin_ctz(lanes);
+        const Vec3<L> o{vfloat<L>(r.o.x[i]), vfloat<L>(r.o.y[i]), vfloat<L>(r.o.z[i])};
+        const Vec3<L> d{vfloat<L>(r.d.x[i]), vfloat<L>(r.d.y[i]), vfloat<L>(r.d.z[i])};
+        PacketLane<N> lane(state, i);
+        test_planar_run<Planar::triangle>(TriangleRays<T, L>(o, d), triangles, count, lane);
+    }
+}
+
+// Leaves of triangles entered by at most this many lanes take test_leaf_lanes: a ray against a
+// leaf costs about what one triangle against the packet costs, and a leaf holds up to 8
+// (bench/README.md, "Issue 18: leaves ray by ray in the packet walk", has the choice measured).
+inline constexpr int kFewLanes = 4;
+
 template <Query Q, TriangleTest T, SphereTest S, int W, int N>
 void trace_bvh_packets(const BvhView& bvh, const RayView& rays, QueryOutput<Q> out) {
+    // Whether leaves entered by few lanes take test_leaf_lanes: for closest hits (occlusion
+    // packets stop at a blocker, and renders send none), and packets of more than one lane.
+    constexpr bool kLaneLeaves = Q == Query::closest && N > 1;
     const BvhNode<W>* nodes = static_cast<const BvhNode<W>*>(bvh.nodes);
     for (uint32_t first = 0; first < rays.count; first += N) {
         const RayPacket<N> r = load_rays<N>(rays, first);
@@ -128,10 +185,18 @@ void trace_bvh_packets(const BvhView& bvh, const RayView& rays, QueryOutput<Q> o
                 }
         };
         const auto walk = [&]() __attribute__((always_inline)) {
-            uint32_t stack_ref[kBvhStackSize];
+            // Closest hits of packets wider than one lane (kLaneLeaves) keep, per entry, the lanes
+            // that entered the child's box, in the high half above its reference, so that the two
+            // move together in the sort.
+            std::conditional_t<kLaneLeaves, uint64_t, uint32_t> stack_ref[kBvhStackSize];
             float stack_t[kBvhStackSize];
             int top = 0;
             uint32_t ref = bvh.root;
+            [[maybe_unused]] uint32_t lanes = simd::movemask(r.active);  // those that entered ref's box
+            const auto pop = [&](int entry) __attribute__((always_inline)) {
+                ref = uint32_t(stack_ref[entry]);
+                if constexpr (kLaneLeaves) lanes = uint32_t(stack_ref[entry] >> 32);
+            };
             for (;;) {
                 if (!(ref & kBvhLeafBit)) {
                     const BvhNode<W>& node = nodes[ref];
@@ -150,17 +215,23 @@ void trace_bvh_packets(const BvhView& bvh, const RayView& rays, QueryOutput<Q> o
                         leave = simd::min(leave * vfloat<N>(kRobustFarScale), reach);
                         const vbool<N> entered = r.active & (enter <= leave);
                         if (simd::none(entered)) continue;
-                        stack_ref[top] = node.child[c];
+                        if constexpr (kLaneLeaves) stack_ref[top] = uint64_t(simd::movemask(entered)) << 32 | node.child[c];
+                        else stack_ref[top] = node.child[c];
                         stack_t[top] = simd::reduce_min(simd::select(entered, enter, vfloat<N>(kInfinity)));
                         ++top;
                     }
                     if (top > base) {
                         if constexpr (Q == Query::closest) sort_far_to_near(stack_ref + base, stack_t + base, top - base);
-                        ref = stack_ref[--top];
+                        pop(--top);
                         continue;
                     }
                 } else {
-                    test_leaf_packet<T, S, Q, N>(bvh, ref, r, tr, state);
+                    bool by_lane = false;
+                    if constexpr (kLaneLeaves)
+                        by_lane = BvhLeafKind((ref >> kBvhKindShift) & 3u) == BvhLeafKind::triangle &&
+                                  __builtin_popcount(lanes) <= kFewLanes;
+                    if (!by_lane) test_leaf_packet<T, S, Q, N>(bvh, ref, r, tr, state);
+                    else if constexpr (kLaneLeaves) test_leaf_lanes<T, N>(bvh, ref, r, lanes, state);
                     if (state.done()) break;
                 }
                 // The farthest any active lane still looks: entries beyond it cannot matter.
@@ -168,7 +239,7 @@ void trace_bvh_packets(const BvhView& bvh, const RayView& rays, QueryOutput<Q> o
                 bool next = false;
                 while (top > 0 && !next) next = stack_t[--top] <= reach;
                 if (!next) break;
-                ref = stack_ref[top];
+                pop(top);
             }
         };
         if constexpr (Q == Query::closest) test_beside();

@@ -96,9 +96,11 @@ WT_KERNEL_INLINE void test_leaf(const BvhView& bvh, uint32_t ref, const SingleRa
 }
 
 // Descending by distance, so the nearest child is on top of the stack. At most W entries.
-WT_KERNEL_INLINE void sort_far_to_near(uint32_t* refs, float* t, int count) {
+// Ref: a child reference, or one with what the walk keeps beside it (bvh_packet_traverse.h).
+template <typename Ref>
+WT_KERNEL_INLINE void sort_far_to_near(Ref* refs, float* t, int count) {
     for (int i = 1; i < count; ++i) {
-        const uint32_t r = refs[i];
+        const Ref r = refs[i];
         const float ti = t[i];
         int j = i - 1;
         for (; j >= 0 && t[j] < ti; --j) refs[j + 1] = refs[j], t[j + 1] = t[j];
