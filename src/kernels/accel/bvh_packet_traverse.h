@@ -3,8 +3,8 @@
 // node when any of its active rays enters a child's box, and a leaf's primitives are tested
 // against all N rays at once, one primitive broadcast at a time, as the flat ray-packet kernels
 // do; a leaf of triangles that few of the rays entered, ray by ray against all its triangles
-// at once, as the single-ray walk does. Incoherent rays would split the packet at once and pay for N rays at every node; they
-// use one ray at a time (bvh_traverse.h). Returns the same bits as the other kernels: the same
+// at once, as the single-ray walk does. Incoherent rays would split the packet at once and pay
+// for N rays at every node; they use one ray at a time (bvh_traverse.h). Returns the same bits as the other kernels: the same
 // primitive tests, ties on t broken by primitive id, and the same conservative box test
 // (Ize's far-slab factor, boxes padded for rounding).
 
@@ -106,8 +106,8 @@ WT_KERNEL_INLINE void test_leaf_packet(const BvhView& bvh, uint32_t ref, const R
 // One lane of a packet as test_planar_run's state (single_ray.h): a leaf's triangles against that
 // lane's ray alone, every hit recorded into the packet's state as the packet's own test records
 // it. The same primitive test per ray and triangle, and the same (t, id) comparison: the same bits.
-// The limit is the lane's at the leaf's start; a hit past a nearer one found in the same leaf
-// loses in record.
+// The limit is the lane's, read again after each group of triangles tested together; a hit past a
+// nearer one of the same group loses in record.
 template <int N>
 struct PacketLane {
     TreePacketState<Query::closest, N>& packet;
