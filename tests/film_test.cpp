@@ -86,6 +86,30 @@ TEST(Film, ValuesBeyondTheFixedPointRangeAreRefusedAndLeaveNoTrace) {
     EXPECT_DOUBLE_EQ(film.pixel_mean(0).x, (1.0 + 0x1p42) / 2.0);
 }
 
+// A sum that would overflow in a later channel refuses the sample after the earlier channels
+// were added: they are taken back, so the film is the same bits as before. The same for splats.
+TEST(Film, ASumOverflowingInALaterChannelLeavesNoTrace) {
+    const FixedPoint largest = ~(FixedPoint(1) << 127);
+    Film film(2, 1, {"depth", Film::splat_channels[0], Film::splat_channels[1], Film::splat_channels[2]});
+    const float depth = 2.0f;
+    EXPECT_TRUE(film.add_sample(0, glm::vec3(1.0f), &depth));
+    EXPECT_TRUE(film.add_splat(0, glm::vec3(1.0f)));
+    const std::size_t stride = film.channels_per_pixel();
+    film.raw_sums()[4] = largest;               // pixel 0's sum of green squared: full
+    film.raw_sums()[stride - 1] = largest - 1;  // pixel 0's blue splat: one step from full
+    const Film before = film;
+    EXPECT_FALSE(film.add_sample(0, glm::vec3(1.0f, 1.0f, 1.0f), &depth)) << "green squared overflows";
+    EXPECT_FALSE(film.add_splat(0, glm::vec3(1.0f, 1.0f, 1.0f))) << "the blue splat overflows";
+    EXPECT_TRUE(film == before);
+    // The other side: a sample and a splat whose sums all fit still go in, and move the sums.
+    EXPECT_TRUE(film.add_sample(0, glm::vec3(1.0f, 0.0f, 1.0f), &depth));
+    EXPECT_TRUE(film.add_splat(0, glm::vec3(1.0f, 1.0f, 0.0f)));
+    EXPECT_EQ(film.pixel_count(0), 2u);
+    EXPECT_EQ(film.raw_sums()[0], 2 * FixedPoint(fixed_point_one));
+    EXPECT_EQ(film.raw_sums()[stride - 3], 2 * FixedPoint(fixed_point_one));
+    EXPECT_FALSE(film == before);
+}
+
 TEST(Film, AddingFilmsChecksLayoutAndOverflow) {
     Film a(2, 2), b(2, 2), other_size(2, 1), other_channels(2, 2, {"depth"});
     EXPECT_THROW(a.add_film(other_size), std::invalid_argument);

@@ -28,28 +28,8 @@ Film::Film(int width, int height, std::vector<std::string> extra_channels)
 }
 
 bool Film::add_splat(uint32_t pixel, const glm::vec3& value) {
-    FixedPoint* sums = &sums_[std::size_t(pixel) * stride_ + stride_ - 3];
-    FixedPoint updated[3];
-    for (int c = 0; c < 3; ++c) {
-        FixedPoint v;
-        updated[c] = sums[c];
-        if (!to_fixed_point(double(value[c]), v) || !add_fixed_point(updated[c], v)) return false;
-    }
-    for (int c = 0; c < 3; ++c) sums[c] = updated[c];
-    return true;
-}
-
-bool Film::add_extra(FixedPoint* sums, const float* extra) {
-    // Checked before anything is stored, so a refused sample leaves no trace in any channel.
-    const std::size_t n = sample_extras_;
-    FixedPoint updated[max_extra_channels];
-    std::copy(sums, sums + n, updated);
-    for (std::size_t c = 0; c < n; ++c) {
-        FixedPoint v;
-        if (!to_fixed_point(extra ? extra[c] : 0.0f, v) || !add_fixed_point(updated[c], v)) return false;
-    }
-    std::copy(updated, updated + n, sums);
-    return true;
+    const float values[3] = {value.x, value.y, value.z};
+    return add_fixed_point(&sums_[std::size_t(pixel) * stride_ + stride_ - 3], values, 3);
 }
 
 glm::dvec3 Film::pixel_sum(uint32_t pixel) const {

@@ -48,14 +48,12 @@ public:
         const double r = radiance.x, g = radiance.y, b = radiance.z;
         const double values[6] = {r, g, b, r * r, g * g, b * b};  // squares of floats are exact in double
         FixedPoint* sums = &sums_[std::size_t(pixel) * stride_];
-        FixedPoint updated[6];
-        for (int c = 0; c < 6; ++c) {
-            FixedPoint v;
-            updated[c] = sums[c];
-            if (!to_fixed_point(values[c], v) || !add_fixed_point(updated[c], v)) return false;
+        if (!add_fixed_point(sums, values, 6)) return false;
+        // Without `extra` the extra channels gain zeros, which changes nothing.
+        if (sample_extras_ > 0 && extra && !add_fixed_point(sums + 6, extra, sample_extras_)) {
+            subtract_fixed_point(sums, values, 6);
+            return false;
         }
-        if (sample_extras_ > 0 && !add_extra(sums + 6, extra)) return false;
-        for (int c = 0; c < 6; ++c) sums[c] = updated[c];
         ++count_[pixel];
         return true;
     }
@@ -115,8 +113,6 @@ public:
     }
 
 private:
-    bool add_extra(FixedPoint* sums, const float* extra);
-
     int width_, height_;
     std::vector<std::string> extra_channels_;
     std::size_t stride_;

@@ -10,6 +10,7 @@
 // sum is 128 bits, so 2^40 samples of 2^46 (7e13) each fit; adds are checked and an add that
 // would overflow is refused, never wrapped.
 
+#include <cstddef>
 #include <cstdint>
 
 #if defined(__x86_64__)
@@ -50,6 +51,33 @@ inline bool add_fixed_point(FixedPoint& a, FixedPoint b) {
     FixedPoint sum;
     if (__builtin_add_overflow(a, b, &sum)) return false;
     a = sum;
+    return true;
+}
+
+// Takes back what add_fixed_point(sums, values, n) added: each value converts to the same
+// integer again, and an integer subtraction exactly undoes an addition that did not overflow.
+template <typename Value>
+inline void subtract_fixed_point(FixedPoint* sums, const Value* values, std::size_t n) {
+    for (std::size_t c = 0; c < n; ++c) {
+        FixedPoint v = 0;
+        to_fixed_point(double(values[c]), v);
+        sums[c] -= v;
+    }
+}
+
+// sums[c] += values[c] for every c < n, or nothing: false, and the sums as they were, when a
+// value does not convert or a sum would overflow. Added in place and taken back on a refusal:
+// the other way, a copy of the sums stored after every check, is written in 64-bit halves and
+// read back 128 bits at a time, a failed store-to-load forward per sum on every sample.
+template <typename Value>
+inline bool add_fixed_point(FixedPoint* sums, const Value* values, std::size_t n) {
+    for (std::size_t c = 0; c < n; ++c) {
+        FixedPoint v;
+        if (!to_fixed_point(double(values[c]), v) || !add_fixed_point(sums[c], v)) {
+            subtract_fixed_point(sums, values, c);
+            return false;
+        }
+    }
     return true;
 }
 

@@ -58,12 +58,8 @@ PhotonGather gather_photons_from(ForEachNear&& for_each_near, float radius, cons
         const float cos_i = glm::dot(at.normal, wi);
         if (!(cos_i > 0.0f && glm::dot(p.normal, at.normal) > 0.0f)) return;
         const glm::vec3 c = diffuse_bsdf_for_power(bsdf, at, wi, cos_i) * p.power;
-        FixedPoint v[3];
-        if (!(to_fixed_point(double(c.x), v[0]) && to_fixed_point(double(c.y), v[1]) && to_fixed_point(double(c.z), v[2])))
-            return;  // not finite: never in the image
-        FixedPoint s[3] = {sum[0], sum[1], sum[2]};
-        if (!(add_fixed_point(s[0], v[0]) && add_fixed_point(s[1], v[1]) && add_fixed_point(s[2], v[2]))) return;
-        sum[0] = s[0], sum[1] = s[1], sum[2] = s[2];
+        const float values[3] = {c.x, c.y, c.z};
+        if (!add_fixed_point(sum, values, 3)) return;  // not finite, or beyond the sum: never in the image
         ++out.photons;
     });
     if (out.photons == 0) return out;
