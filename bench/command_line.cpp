@@ -15,7 +15,7 @@ bool starts_with(const std::string& text, const std::string& prefix) { return te
 std::vector<Isa> isas_named(const std::string& value) {
     std::vector<Isa> isas;
     if (value == "all") {
-        for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512})
+        for (Isa isa : kAllIsas)
             if (cpu_supports(isa)) isas.push_back(isa);
     } else if (value == "auto") {
         isas.push_back(best_supported_isa());
@@ -24,7 +24,7 @@ std::vector<Isa> isas_named(const std::string& value) {
         if (!cpu_supports(*isa)) throw std::invalid_argument("--isa: this CPU does not support " + value);
         isas.push_back(*isa);
     } else {
-        throw std::invalid_argument("--isa: expected scalar, sse4, avx2, avx512, auto or all, got '" + value + "'");
+        throw std::invalid_argument("--isa: expected " + isa_names(", ") + ", auto or all, got '" + value + "'");
     }
     return isas;
 }

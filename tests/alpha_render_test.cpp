@@ -259,7 +259,7 @@ TEST(AlphaRender, SameBitsForEveryScheduleIsaAndWidth) {
                                       card_before_wall(AlphaMode::blend, 0.5f, 0.5f, false), floor_under_card(AlphaMode::blend, 0.5f, false)}) {
         const Film film = test::render_film(d, Integrator::wavefront).film;
         test::expect_same_film_for_any_schedule(d, film);
-        for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512}) {
+        for (Isa isa : kAllIsas) {
             if (!cpu_supports(isa)) continue;
             for (int width : {4, 8}) {
                 EXPECT_TRUE(film == test::render_film(d, Integrator::wavefront, 1, 16, 2048, isa, Accel::bvh, width).film)

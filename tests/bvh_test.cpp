@@ -103,7 +103,7 @@ void expect_bvh_matches_flat(const Scene& scene, const test::RayBatch& rays, con
 
 std::vector<Isa> supported_isas() {
     std::vector<Isa> isas;
-    for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512})
+    for (Isa isa : kAllIsas)
         if (cpu_supports(isa)) isas.push_back(isa);
     return isas;
 }

@@ -114,7 +114,7 @@ struct ImplementationRun {
 
 inline std::vector<Isa> supported_isas() {
     std::vector<Isa> isas;
-    for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512})
+    for (Isa isa : kAllIsas)
         if (cpu_supports(isa)) isas.push_back(isa);
     return isas;
 }

@@ -162,7 +162,7 @@ void compare_with_flattened(TriangleTest test, std::size_t ray_count) {
     EXPECT_LE(occlusion_differs, ray_count / 2000);
 
     // Every ISA, and the packet entry points, give the scalar kernels' bits.
-    for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512}) {
+    for (Isa isa : kAllIsas) {
         if (!cpu_supports(isa)) continue;
         for (bool packets : {false, true}) {
             const Outcome c = trace(isa, instanced, instanced_bvh.view, rays, packets);

@@ -34,7 +34,7 @@ TEST(WavefrontVsReference, AgreeWithinStatisticalToleranceOnHexroom) {
 TEST(WavefrontVsReference, SameSeedGivesTheSameBitsWithEveryIsa) {
     const SceneDescription d = test::hexroom(20, 20, 8, /*seed=*/5);
     const test::RenderedFilm ref = test::render_film(d, Integrator::reference);
-    for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512}) {
+    for (Isa isa : kAllIsas) {
         if (!cpu_supports(isa)) continue;
         const test::RenderedFilm wave = test::render_film(d, Integrator::wavefront, 2, 16, 2048, isa);
         EXPECT_TRUE(test::films_bit_identical(wave.film, ref.film)) << isa_name(isa);

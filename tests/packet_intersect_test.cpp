@@ -181,7 +181,7 @@ TEST_P(PacketIntersect, SceneWithoutSpheresOrTriangles) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Isas, PacketIntersect, ::testing::Values(Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512),
+INSTANTIATE_TEST_SUITE_P(Isas, PacketIntersect, ::testing::ValuesIn(kAllIsas),
                          [](const auto& info) { return std::string(isa_name(info.param)); });
 
 }  // namespace

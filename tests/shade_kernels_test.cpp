@@ -304,7 +304,7 @@ void expect_light_kernel_equals_direct_light_sampler(const ShadeKernels& kernels
 
 std::vector<Isa> supported_isas() {
     std::vector<Isa> isas;
-    for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512})
+    for (Isa isa : kAllIsas)
         if (cpu_supports(isa)) isas.push_back(isa);
     return isas;
 }

@@ -127,7 +127,7 @@ TEST(Watertight, NoRayEscapesAClosedMeshOnAnyIsa) {
         const std::vector<Ray> rays = rays_at_vertices_and_edges(c.mesh, c.origins);
         const Scene watertight = scene_of(c.mesh, TriangleTest::watertight);
         const Scene moller = scene_of(c.mesh, TriangleTest::moller_trumbore);
-        for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512}) {
+        for (Isa isa : kAllIsas) {
             if (!cpu_supports(isa)) continue;
             EXPECT_EQ(count_escapes(watertight, rays, isa).escaped, 0u) << c.name << " " << isa_name(isa);
         }
@@ -169,7 +169,7 @@ TEST(Watertight, NoSpawnedRayHitsTheFaceItLeavesOnAnyIsa) {
     }
     for (TriangleTest test : {TriangleTest::watertight, TriangleTest::moller_trumbore}) {
         const Scene scene = scene_of(box, test);
-        for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512}) {
+        for (Isa isa : kAllIsas) {
             if (!cpu_supports(isa)) continue;
             const std::vector<Hit> hits = closest_hits(scene, to_faces, isa);
             std::vector<Ray> spawned, unmoved;

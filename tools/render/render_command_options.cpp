@@ -2,10 +2,13 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/description/adaptive_settings.h"
 #include "core/description/estimator_settings.h"
 #include "core/film/aov.h"
+#include "kernels/accel/accel_choice.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "tools/cli/cli_values.h"
 
 namespace wt {
@@ -71,11 +74,14 @@ CLI::App* add_render_command(CLI::App& app, RenderCommandOptions& o) {
         ->check(non_negative_float());
     cmd->add_option("--adaptive-min-spp", o.adaptive_min_spp, "Adaptive sampling: no pixel stops before N samples")
         ->transform(decimal_integer(adaptive_min_spp_lowest, 1 << 20));
-    cmd->add_option("--isa", o.isa_name, "Intersection kernels: scalar, sse4, avx2, avx512 or auto (the best this CPU runs)")
-        ->check(CLI::IsMember({"auto", "scalar", "sse4", "avx2", "avx512"}));
+    std::vector<std::string> isas{"auto"}, accels;
+    for (Isa isa : kAllIsas) isas.push_back(isa_name(isa));
+    for (Accel accel : kAllAccels) accels.push_back(accel_name(accel));
+    cmd->add_option("--isa", o.isa_name, "Intersection kernels: " + isa_names(", ") + " or auto (the best this CPU runs)")
+        ->check(CLI::IsMember(isas));
     cmd->add_option("--accel", o.accel_name,
                     "Acceleration structure: auto (flat list for tiny scenes, else a BVH), bvh, or brute (flat list)")
-        ->check(CLI::IsMember({"auto", "bvh", "brute"}));
+        ->check(CLI::IsMember(accels));
     cmd->add_option("--bvh-width", o.render.bvh.node_width, "Children per BVH node: 4 or 8")->transform(decimal_integer(4, 8))->check(CLI::IsMember({4, 8}));
     cmd->add_option("--tile-size", o.render.tile_size, "Tile side in pixels")->transform(decimal_integer(1, 65536));
     cmd->add_option("--batch-paths", o.render.batch_paths, "Camera paths per wavefront batch")

@@ -12,7 +12,7 @@ const char* accel_name(Accel accel) {
 }
 
 std::optional<Accel> parse_accel(const std::string& name) {
-    for (Accel a : {Accel::automatic, Accel::bvh, Accel::brute})
+    for (Accel a : kAllAccels)
         if (name == accel_name(a)) return a;
     return std::nullopt;
 }

@@ -14,6 +14,7 @@ enum class Accel {
     bvh,
     brute,      // the flat list: every ray against every primitive
 };
+inline constexpr Accel kAllAccels[] = {Accel::automatic, Accel::bvh, Accel::brute};
 
 // The flat ray-packet kernels test as many rays at once as they have lanes, so how many
 // primitives they beat a BVH on depends on the width, and not only through it: the 4-lane
@@ -36,7 +37,7 @@ inline uint32_t bvh_crossover(int kernel_width) {
 inline bool parallelograms_beside_tree(int kernel_width) { return kernel_width > 1; }
 
 const char* accel_name(Accel accel);
-std::optional<Accel> parse_accel(const std::string& name);  // "auto", "bvh", "brute"
+std::optional<Accel> parse_accel(const std::string& name);  // accel_name of one of kAllAccels
 
 // What `automatic` resolves to for a scene of `primitives` primitives traced by kernels of
 // `kernel_width` lanes. Instances are traced through their two-level BVH only, and so are

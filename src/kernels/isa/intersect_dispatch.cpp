@@ -16,9 +16,15 @@ const char* isa_name(Isa isa) {
 }
 
 std::optional<Isa> parse_isa(const std::string& name) {
-    for (Isa isa : {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512})
+    for (Isa isa : kAllIsas)
         if (name == isa_name(isa)) return isa;
     return std::nullopt;
+}
+
+std::string isa_names(const std::string& separator) {
+    std::string names;
+    for (Isa isa : kAllIsas) names += (names.empty() ? "" : separator) + isa_name(isa);
+    return names;
 }
 
 // __builtin_cpu_supports also checks that the OS saves the wide registers (XCR0), so a
