@@ -10,6 +10,7 @@
 #include "kernels/caustics/photon_memory.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/queues/ray_queues.h"
+#include "kernels/renderer.h"
 #include "kernels/wavefront/wavefront_renderer.h"
 
 namespace wt {

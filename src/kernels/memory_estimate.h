@@ -9,7 +9,7 @@
 
 #include "core/system/available_memory.h"
 #include "core/scene/scene.h"
-#include "kernels/renderer.h"
+#include "kernels/render_options.h"
 
 namespace wt {
 

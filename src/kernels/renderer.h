@@ -23,26 +23,10 @@
 #include "kernels/isa/intersect_kernels.h"
 #include "kernels/work/render_stats.h"
 #include "kernels/work/sample_range.h"
+#include "kernels/render_options.h"
 #include "kernels/work/tiles.h"
 
 namespace wt {
-
-enum class Integrator { wavefront, reference };
-
-struct RenderOptions {
-    Integrator integrator = Integrator::wavefront;
-    int threads = 0;                 // 0: one per hardware thread
-    int tile_size = 16;              // pixels per tile side
-    std::size_t batch_paths = 2048;  // camera paths per wavefront batch: queues sized to stay in L2
-    // With photons, the light paths whose photons are held at once (PhotonMaps::samples_per_batch):
-    // memory, never the image.
-    uint64_t photon_batch_paths = uint64_t(1) << 18;
-    std::optional<Isa> isa;          // intersection kernels; empty: the best this CPU runs
-    Accel accel = Accel::automatic;  // never changes the image, only how fast it comes
-    BvhBuildOptions bvh;             // when a BVH is built (its `threads` is ignored: the render's are used)
-    // AOVs to render: the film must have exactly aov_film_channels(aovs) as its extra channels.
-    AovSelection aovs;
-};
 
 struct RenderResult {
     RayCounts counts;

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/scene/scene.h"
-#include "kernels/renderer.h"
+#include "kernels/render_options.h"
 
 namespace wt {
 

@@ -10,7 +10,8 @@
 #include "core/checkpoint/checkpoint.h"
 #include "core/checkpoint/checkpoint_match.h"
 #include "core/film/image_output.h"
-#include "kernels/renderer.h"
+#include "kernels/render_options.h"
+#include "kernels/work/sample_range.h"
 
 namespace wt {
 

@@ -12,7 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "kernels/renderer.h"
+#include "kernels/render_options.h"
 #include "tools/render/reference_error_options.h"
 
 namespace wt {

@@ -8,7 +8,7 @@
 #include "kernels/accel/bvh_view.h"
 #include "kernels/accel/scene_bvh.h"
 #include "kernels/isa/intersect_dispatch.h"
-#include "kernels/renderer.h"
+#include "kernels/render_options.h"
 
 namespace wt {
 

@@ -4,6 +4,7 @@
 
 #include "core/film/film.h"
 #include "core/scene/scene.h"
+#include "kernels/renderer.h"
 
 namespace wt {
 

@@ -9,7 +9,7 @@
 #include "core/image_io/rgb_image.h"
 #include "core/image_metrics/image_metrics.h"
 #include "core/description/scene_description.h"
-#include "kernels/renderer.h"
+#include "kernels/render_options.h"
 #include "tools/tradeoff/tradeoff_knobs.h"
 
 namespace wt {
