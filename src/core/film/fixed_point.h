@@ -66,9 +66,8 @@ inline void subtract_fixed_point(FixedPoint* sums, const Value* values, std::siz
 }
 
 // sums[c] += values[c] for every c < n, or nothing: false, and the sums as they were, when a
-// value does not convert or a sum would overflow. Added in place and taken back on a refusal:
-// the other way, a copy of the sums stored after every check, is written in 64-bit halves and
-// read back 128 bits at a time, a failed store-to-load forward per sum on every sample.
+// value does not convert or a sum would overflow. Added in place and taken back on a refusal,
+// so the common case, where every value goes in, makes no copy of the sums.
 template <typename Value>
 inline bool add_fixed_point(FixedPoint* sums, const Value* values, std::size_t n) {
     for (std::size_t c = 0; c < n; ++c) {
