@@ -8,7 +8,7 @@
 #include "core/description/estimator_settings.h"
 #include "core/film/aov.h"
 #include "kernels/accel/accel_choice.h"
-#include "kernels/isa/intersect_dispatch.h"
+#include "kernels/isa/isa.h"
 #include "tools/cli/cli_values.h"
 
 namespace wt {

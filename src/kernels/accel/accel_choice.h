@@ -36,8 +36,22 @@ inline uint32_t bvh_crossover(int kernel_width) {
 // one; for them the tree, which skips most, is faster (bench/README.md, issue 18).
 inline bool parallelograms_beside_tree(int kernel_width) { return kernel_width > 1; }
 
-const char* accel_name(Accel accel);
-std::optional<Accel> parse_accel(const std::string& name);  // accel_name of one of kAllAccels
+// Header-only, as isa.h's names: the command-line code parses them without linking the kernels.
+inline const char* accel_name(Accel accel) {
+    switch (accel) {
+        case Accel::automatic: return "auto";
+        case Accel::bvh: return "bvh";
+        case Accel::brute: return "brute";
+    }
+    return "unknown";
+}
+
+// accel_name of one of kAllAccels; empty for anything else.
+inline std::optional<Accel> parse_accel(const std::string& name) {
+    for (Accel a : kAllAccels)
+        if (name == accel_name(a)) return a;
+    return std::nullopt;
+}
 
 // What `automatic` resolves to for a scene of `primitives` primitives traced by kernels of
 // `kernel_width` lanes. Instances are traced through their two-level BVH only, and so are

@@ -5,28 +5,6 @@
 
 namespace wt {
 
-const char* isa_name(Isa isa) {
-    switch (isa) {
-        case Isa::scalar: return "scalar";
-        case Isa::sse4: return "sse4";
-        case Isa::avx2: return "avx2";
-        case Isa::avx512: return "avx512";
-    }
-    return "unknown";
-}
-
-std::optional<Isa> parse_isa(const std::string& name) {
-    for (Isa isa : kAllIsas)
-        if (name == isa_name(isa)) return isa;
-    return std::nullopt;
-}
-
-std::string isa_names(const std::string& separator) {
-    std::string names;
-    for (Isa isa : kAllIsas) names += (names.empty() ? "" : separator) + isa_name(isa);
-    return names;
-}
-
 // __builtin_cpu_supports also checks that the OS saves the wide registers (XCR0), so a
 // kernel it allows cannot fault on a kernel that disabled AVX-512 state. A sanitizer build made
 // on a CPU without AVX-512 has no AVX-512 kernels (WT_WITHOUT_AVX512_KERNELS, CMakeLists.txt):

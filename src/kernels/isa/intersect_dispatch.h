@@ -13,11 +13,6 @@
 
 namespace wt {
 
-const char* isa_name(Isa isa);
-// isa_name of one of kAllIsas; empty for anything else ("auto" is the caller's business).
-std::optional<Isa> parse_isa(const std::string& name);
-// The names of kAllIsas, in order, joined by `separator`: for help texts and errors.
-std::string isa_names(const std::string& separator);
 // The CPU and the OS (saved register state) support the ISA's instructions.
 bool cpu_supports(Isa isa);
 Isa best_supported_isa();

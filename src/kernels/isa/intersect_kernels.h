@@ -5,13 +5,11 @@
 #include <cstdint>
 
 #include "kernels/accel/bvh_view.h"
+#include "kernels/isa/isa.h"
 #include "kernels/primitives/soa_views.h"
 
 namespace wt {
 
-enum class Isa : uint8_t { scalar, sse4, avx2, avx512 };
-// Every ISA, narrowest first: what parsing, the command lines and the tests iterate over.
-inline constexpr Isa kAllIsas[] = {Isa::scalar, Isa::sse4, Isa::avx2, Isa::avx512};
 
 // Two ways to put SIMD lanes to work on a flat primitive list:
 //   ray packet  - N rays from the queue against one primitive at a time (primitive broadcast)
