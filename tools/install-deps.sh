@@ -6,7 +6,9 @@ set -euo pipefail
 packages=(
   g++ cmake make                # toolchain
   libglm-dev                    # vector maths
-  libopenimageio-dev            # image output (.exr, .png)
+  libopenimageio-dev            # images read (textures, references) and written as .hdr, .jpg
+  libopenexr-dev                # .exr written (without loading OpenImageIO: src/core/image_io/direct_image_output.h)
+  libpng-dev                    # .png written (the same)
   openimageio-tools             # Debian 12's OpenImageIO CMake targets name /usr/bin/iconvert and friends
   libopencv-core-dev            # Debian 12's OpenImageIO CMake target names /usr/include/opencv4
   nlohmann-json3-dev            # scene files

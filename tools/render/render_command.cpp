@@ -125,10 +125,13 @@ int run_render_command(RenderCommandOptions& o) {
         if (MpiJob::active()) check_mpi_render_options(o);
 #endif
         for (const std::string& out : o.outputs)
-            if (is_checkpoint_path(out)) check_checkpoint_path(out, "-o");
-            else check_output_path(out);
+            if (is_checkpoint_path(out)) {
+                check_checkpoint_path(out, "-o");
+            } else {
+                check_output_path(out);
+                check_image_writer_available(out);
+            }
         if (o.checkpoint) check_checkpoint_path(*o.checkpoint, "--checkpoint");
-        if (!std::all_of(o.outputs.begin(), o.outputs.end(), is_checkpoint_path)) check_image_writer_available();
         if (o.render.aovs.any() && !o.quiet && std::none_of(o.outputs.begin(), o.outputs.end(), holds_layers))
             std::cerr << "wavetrace: note: --aov layers are written to .exr outputs only, and none was given\n";
         o.render.integrator = o.integrator_name == "reference" ? Integrator::reference : Integrator::wavefront;

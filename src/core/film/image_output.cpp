@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/system/atomic_file.h"
+#include "core/image_io/direct_image_output.h"
 #include "core/image_io/image_module.h"
 
 namespace wt {
@@ -93,7 +94,12 @@ void check_output_path(const std::string& path) {
     }
 }
 
-void check_image_writer_available() { image_module(); }
+// EXR and PNG are written here (direct_image_output.h); the other formats through the module.
+bool written_by_module(const std::string& ext) { return ext != ".exr" && ext != ".png"; }
+
+void check_image_writer_available(const std::string& path) {
+    if (written_by_module(lowercase_extension(path))) image_module();
+}
 
 float linear_to_srgb(float linear) {
     const float c = std::clamp(linear, 0.0f, 1.0f);
@@ -137,14 +143,23 @@ void write_image(const std::string& path, int width, int height, const std::vect
     if (!metadata) attributes.add_string("oiio:ColorSpace", encoding == ImageEncoding::srgb_8bit ? "sRGB" : "Linear");
     const WtImageAttribute* attribute_list = attributes.finish();
 
-    const WtImageModuleApi& module = image_module();
+    const WtImageModuleApi* module = written_by_module(ext) ? &image_module() : nullptr;
     try {
         write_file_atomically(path, [&](const std::string& temporary) {
             const WtImageToWrite image{temporary.c_str(), width, height, int(names.size()), name_pointers.data(),
                                        encoding == ImageEncoding::srgb_8bit ? WT_PIXEL_UINT8 : WT_PIXEL_FLOAT, data,
                                        attribute_list, int(attributes.list.size())};
-            char error[1024];
-            if (module.write_image(&image, error, sizeof error) != 0) throw ImageError(path + ": " + error);
+            if (module) {
+                char error[1024];
+                if (module->write_image(&image, error, sizeof error) != 0) throw ImageError(path + ": " + error);
+                return;
+            }
+            try {
+                if (ext == ".exr") write_exr(image);
+                else write_png(image);
+            } catch (const ImageError& e) {  // it names the temporary file; say which image that was
+                throw ImageError(path + ": " + e.what());
+            }
         });
     } catch (const FileWriteError& e) {
         throw ImageError(e.what());

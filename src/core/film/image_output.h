@@ -1,6 +1,7 @@
 #pragma once
-// Writes the resolved film through the image I/O module (OpenImageIO, loaded on first use:
-// core/image_io/image_module_abi.h). The format follows the extension: .exr and .hdr keep
+// Writes the resolved film: EXR and PNG files through OpenEXR and libpng
+// (core/image_io/direct_image_output.h), the others through the image I/O module (OpenImageIO,
+// loaded on first use: core/image_io/image_module_abi.h). The format follows the extension: .exr and .hdr keep
 // linear float radiance; .png and .jpg get the sRGB transfer curve, clamped to 8 bits. EXR
 // files also hold the AOV layers, if any; the others hold the beauty image only. The image
 // goes to a temporary file beside the target and is renamed over it, so an interrupted or
@@ -28,8 +29,9 @@ bool holds_layers(const std::string& path);
 // the image's) fits the directory's name limit.
 void check_output_path(const std::string& path);
 
-// Also before rendering: the image I/O module loads (throws ImageError saying why not).
-void check_image_writer_available();
+// Also before rendering: if `path`'s format is written through the image I/O module, the module
+// loads (throws ImageError saying why not).
+void check_image_writer_available(const std::string& path);
 
 // What every image records of how it was made. In EXR files as the attributes
 // `wavetrace:spp` (int), `wavetrace:seed` (string: it is 64-bit), `wavetrace:scene_hash`,

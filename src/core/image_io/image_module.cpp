@@ -20,7 +20,7 @@ namespace {
 const WtImageModuleApi* load_module(std::string& error) {
     const std::string path = image_module_path();
     const std::string what = "cannot load the image I/O module " + path +
-                             " (it reads and writes every image, and belongs next to the wavetrace executable): ";
+                             " (it reads every image and writes those but EXR and PNG, and belongs next to the wavetrace executable): ";
     // Lazy binding, as for a library the executable links: resolving every function of the
     // ~260 libraries at once (RTLD_NOW) cost a tiny render 20 % more CPU time.
     void* handle = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);

@@ -1,6 +1,6 @@
 #pragma once
 // Finds and loads the image I/O module (see image_module_abi.h) the first time an image is
-// read or written: libwavetrace_image_io.so in the directory of the running executable, where
+// read, or written in a format it writes: libwavetrace_image_io.so in the directory of the running executable, where
 // the build and `cmake --install` put it.
 
 #include <string>

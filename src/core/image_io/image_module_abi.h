@@ -3,7 +3,8 @@
 // src/image_io_module/), which is the only code that links OpenImageIO. Debian's OpenImageIO
 // pulls in some 260 shared libraries (OpenCV, ffmpeg, OpenVDB, ...), which cost every start of
 // the program a quarter of a second and 130 MB before it did anything; loaded with dlopen on
-// the first image read or written, they cost only the runs that touch an image.
+// the first image read, or written in a format other than EXR and PNG (those two are written
+// without it: direct_image_output.h), they cost only the runs that need them.
 //
 // Plain C types only, so that nothing but this header has to agree between the two sides, and
 // no exception or allocator crosses it. Bump the version on any change.
