@@ -185,46 +185,45 @@ TEST_F(DirectImageOutput, PngReadsBackAsTheModulesPng) {
     EXPECT_EQ(chunks.back(), "IEND");
 }
 
-TEST_F(DirectImageOutput, TheWrongPixelTypeIsRefusedNamingTheFile) {
-    const std::vector<const char*> names = {"R", "G", "B"};
-    const std::vector<float> floats(3, 0.5f);
-    const std::vector<unsigned char> bytes(3, 128);
-    const std::string exr = path("a.exr"), png = path("a.png");
-    const WtImageToWrite bytes_to_exr{exr.c_str(), 1, 1, 3, names.data(), WT_PIXEL_UINT8, bytes.data(), nullptr, 0};
-    const WtImageToWrite floats_to_png{png.c_str(), 1, 1, 3, names.data(), WT_PIXEL_FLOAT, floats.data(), nullptr, 0};
-    for (const auto& [image, write] : {std::pair{bytes_to_exr, &write_exr}, std::pair{floats_to_png, &write_png}}) {
-        try {
-            write(image);
-            ADD_FAILURE() << image.path << " was written";
-        } catch (const ImageError& e) {
-            EXPECT_NE(std::string(e.what()).find(image.path), std::string::npos) << e.what();
-        }
-        EXPECT_FALSE(fs::exists(image.path));
+// One RGB pixel of each type, and images of it to write to `exr` and `png` as each type.
+struct OnePixel {
+    std::vector<const char*> names = {"R", "G", "B"};
+    std::vector<float> floats = std::vector<float>(3, 0.5f);
+    std::vector<unsigned char> bytes = std::vector<unsigned char>(3, 128);
+    WtImageToWrite floats_to(const std::string& path) const {
+        return {path.c_str(), 1, 1, 3, names.data(), WT_PIXEL_FLOAT, floats.data(), nullptr, 0};
     }
+    WtImageToWrite bytes_to(const std::string& path) const {
+        return {path.c_str(), 1, 1, 3, names.data(), WT_PIXEL_UINT8, bytes.data(), nullptr, 0};
+    }
+};
+
+void expect_refused_naming_the_file(const WtImageToWrite& image, void (*write)(const WtImageToWrite&)) {
+    try {
+        write(image);
+        ADD_FAILURE() << image.path << " was written";
+    } catch (const ImageError& e) {
+        EXPECT_NE(std::string(e.what()).find(image.path), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(image.path));
+}
+
+TEST_F(DirectImageOutput, TheWrongPixelTypeIsRefusedNamingTheFile) {
+    const OnePixel pixel;
+    const std::string exr = path("a.exr"), png = path("a.png");
+    expect_refused_naming_the_file(pixel.bytes_to(exr), &write_exr);
+    expect_refused_naming_the_file(pixel.floats_to(png), &write_png);
     // The right types are written.
-    const WtImageToWrite floats_to_exr{exr.c_str(), 1, 1, 3, names.data(), WT_PIXEL_FLOAT, floats.data(), nullptr, 0};
-    const WtImageToWrite bytes_to_png{png.c_str(), 1, 1, 3, names.data(), WT_PIXEL_UINT8, bytes.data(), nullptr, 0};
-    write_exr(floats_to_exr);
-    write_png(bytes_to_png);
-    EXPECT_EQ(read_image(exr).pixels, floats);
+    write_exr(pixel.floats_to(exr));
+    write_png(pixel.bytes_to(png));
+    EXPECT_EQ(read_image(exr).pixels, pixel.floats);
     EXPECT_EQ(read_image(png).pixels, std::vector<float>(3, 128.0f / 255.0f));
 }
 
 TEST_F(DirectImageOutput, AFileThatCannotBeCreatedIsNamed) {
-    const std::vector<const char*> names = {"R", "G", "B"};
-    const std::vector<float> floats(3, 0.5f);
-    const std::vector<unsigned char> bytes(3, 128);
-    const std::string exr = path("missing/a.exr"), png = path("missing/a.png");
-    const WtImageToWrite to_exr{exr.c_str(), 1, 1, 3, names.data(), WT_PIXEL_FLOAT, floats.data(), nullptr, 0};
-    const WtImageToWrite to_png{png.c_str(), 1, 1, 3, names.data(), WT_PIXEL_UINT8, bytes.data(), nullptr, 0};
-    for (const auto& [image, write] : {std::pair{to_exr, &write_exr}, std::pair{to_png, &write_png}}) {
-        try {
-            write(image);
-            ADD_FAILURE() << image.path << " was written";
-        } catch (const ImageError& e) {
-            EXPECT_NE(std::string(e.what()).find(image.path), std::string::npos) << e.what();
-        }
-    }
+    const OnePixel pixel;
+    expect_refused_naming_the_file(pixel.floats_to(path("missing/a.exr")), &write_exr);
+    expect_refused_naming_the_file(pixel.bytes_to(path("missing/a.png")), &write_png);
 }
 
 }  // namespace
