@@ -111,7 +111,12 @@ std::vector<std::string> png_chunks(const std::string& path) {
     return chunks;
 }
 
-void write_with_module(const WtImageToWrite& image) {
+// `image` written to `direct` by a direct writer and to `module` through the image module.
+void write_both(WtImageToWrite image, void (*write)(const WtImageToWrite&), const std::string& direct,
+                const std::string& module) {
+    image.path = direct.c_str();
+    write(image);
+    image.path = module.c_str();
     char error[1024];
     ASSERT_EQ(image_module().write_image(&image, error, sizeof error), 0) << error;
 }
@@ -126,14 +131,10 @@ TEST_F(DirectImageOutput, ExrReadsBackAsTheModulesExr) {
                               INFINITY, std::numeric_limits<float>::quiet_NaN(), 1e-30f, 0.18f};
     for (int i = 0; i < width * height * channels; ++i)
         pixels.push_back(i % 5 == 0 ? specials[(i / 5) % 8] : 0.37f * float(i) - 3.0f);
-    WtImageToWrite image{nullptr, width, height, channels, names.data(), WT_PIXEL_FLOAT, pixels.data(),
-                         kAttributes.data(), int(kAttributes.size())};
+    const WtImageToWrite image{nullptr, width, height, channels, names.data(), WT_PIXEL_FLOAT, pixels.data(),
+                               kAttributes.data(), int(kAttributes.size())};
     const std::string direct = path("direct.exr"), module = path("module.exr");
-    image.path = direct.c_str();
-    write_exr(image);
-    image.path = module.c_str();
-    write_with_module(image);
-
+    write_both(image, &write_exr, direct, module);
     const ImageData a = read_image(direct), b = read_image(module);
     expect_same_image(a, b);
     EXPECT_EQ(a.channels.size(), names.size());
@@ -160,14 +161,10 @@ TEST_F(DirectImageOutput, PngReadsBackAsTheModulesPng) {
     attributes[0].string_value = "sRGB";
     attributes[3] = {"wavetrace:spp", WT_ATTRIBUTE_STRING, "64", 0, 0.0f};  // PNG text: render_command writes text
     attributes[5] = {"wavetrace:render_seconds", WT_ATTRIBUTE_STRING, "1.25", 0, 0.0f};
-    WtImageToWrite image{nullptr, width, height, 3, names.data(), WT_PIXEL_UINT8, pixels.data(), attributes.data(),
+    const WtImageToWrite image{nullptr, width, height, 3, names.data(), WT_PIXEL_UINT8, pixels.data(), attributes.data(),
                          int(attributes.size())};
     const std::string direct = path("direct.png"), module = path("module.png");
-    image.path = direct.c_str();
-    write_png(image);
-    image.path = module.c_str();
-    write_with_module(image);
-
+    write_both(image, &write_png, direct, module);
     const ImageData a = read_image(direct), b = read_image(module);
     expect_same_image(a, b);
     EXPECT_EQ(a.pixels[1], 37.0f / 255.0f);
