@@ -1,17 +1,22 @@
 // The light paths' first-ray cull (kernels/caustics/specular_targets.h): every first ray whose
 // closest hit (the flat reference loop) is a specular surface is kept, on the hexroom's mirror
 // wall, glass spheres, either triangle test and either sphere test, and at grazing angles; most
-// rays that would end at a wall are dropped; a render with the cull gives the bits of one that
-// traces every first ray, with fewer light rays.
+// rays that would end at a wall are dropped; the any-hit kernels on the targets' view answer as
+// may_hit does; a render with the cull gives the bits of one that traces every first ray, with
+// fewer light rays.
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "kernels/accel/scene_intersect.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "kernels/caustics/light_path.h"
 #include "kernels/caustics/specular_targets.h"
 #include "instance_scenes.h"
@@ -50,40 +55,82 @@ void check(const Scene& scene, const SpecularTargets& targets, const Ray& ray, T
     (kept ? tally.kept_other : tally.dropped) += specular ? 0 : 1;
 }
 
-TEST(SpecularTargets, EveryFirstRayWhoseClosestHitIsSpecularIsKept) {
+// The rays both tests below ask about: the light paths' own first rays, and rays from anywhere
+// in the room in any direction, grazing ones among them.
+struct NamedRay {
+    Ray ray;
+    std::string name;
+};
+std::vector<NamedRay> first_and_random_rays(const Scene& scene) {
+    std::vector<NamedRay> rays;
+    const LightPathTracer tracer(scene, nullptr);
+    for (uint64_t index = 0; index < 40000; ++index)
+        if (const auto r = tracer.start(light_path_key(7, index, 0))) rays.push_back({r->ray, "light path " + std::to_string(index)});
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+    const glm::vec3 eye = scene.camera.eye();
+    for (int k = 0; k < 40000; ++k) {
+        const glm::vec3 origin = eye + glm::vec3(8.0f * u01(rng), 6.0f * u01(rng) - 3.0f, 3.0f * u01(rng) - 2.0f);
+        glm::vec3 d3(u01(rng) - 0.5f, u01(rng) - 0.5f, u01(rng) - 0.5f);
+        if (k % 4 == 0) d3.z *= 1e-4f;  // nearly parallel to the floor and ceiling
+        if (!(glm::length(d3) > 0.0f)) continue;
+        rays.push_back({Ray{origin, glm::normalize(d3)}, "random ray " + std::to_string(k)});
+    }
+    return rays;
+}
+
+// The hexroom at each combination of the primitive tests.
+template <typename F>
+void for_each_accuracy(F&& f) {
     for (const TriangleTest test : {TriangleTest::moller_trumbore, TriangleTest::watertight}) {
         for (const SphereTest spheres : {SphereTest::quadratic, SphereTest::cancellation_free}) {
             SceneDescription d = test::hexroom(8, 8, 1);
             d.settings.accuracy.triangles = test;
             d.settings.accuracy.spheres = spheres;
-            const std::string where = std::string(name_of(test)) + ", " + name_of(spheres);
-            const Scene scene = build_scene(d);
-            const std::optional<SpecularTargets> targets = SpecularTargets::of(scene);
-            ASSERT_TRUE(targets) << where;
-            Tally tally;
-            // The light paths' own first rays.
-            const LightPathTracer tracer(scene, nullptr);
-            for (uint64_t index = 0; index < 40000; ++index) {
-                const auto r = tracer.start(light_path_key(7, index, 0));
-                if (!r) continue;
-                ASSERT_NO_FATAL_FAILURE(check(scene, *targets, r->ray, tally, where + ", light path " + std::to_string(index)));
-            }
-            // And rays from anywhere in the room in any direction, grazing ones among them.
-            std::mt19937 rng(11);
-            std::uniform_real_distribution<float> u01(0.0f, 1.0f);
-            const glm::vec3 eye = scene.camera.eye();
-            for (int k = 0; k < 40000; ++k) {
-                const glm::vec3 origin = eye + glm::vec3(8.0f * u01(rng), 6.0f * u01(rng) - 3.0f, 3.0f * u01(rng) - 2.0f);
-                glm::vec3 d3(u01(rng) - 0.5f, u01(rng) - 0.5f, u01(rng) - 0.5f);
-                if (k % 4 == 0) d3.z *= 1e-4f;  // nearly parallel to the floor and ceiling
-                if (!(glm::length(d3) > 0.0f)) continue;
-                ASSERT_NO_FATAL_FAILURE(check(scene, *targets, Ray{origin, glm::normalize(d3)}, tally, where + ", random ray " + std::to_string(k)));
-            }
-            // Both sides: mirror and glass are hit and kept, and walls are hit and dropped.
-            EXPECT_GT(tally.specular_hits, 4000u) << where;
-            EXPECT_GT(tally.dropped, 20000u) << where;
+            f(build_scene(d), std::string(name_of(test)) + ", " + name_of(spheres));
         }
     }
+}
+
+TEST(SpecularTargets, EveryFirstRayWhoseClosestHitIsSpecularIsKept) {
+    for_each_accuracy([](const Scene& scene, const std::string& where) {
+        const std::optional<SpecularTargets> targets = SpecularTargets::of(scene);
+        ASSERT_TRUE(targets) << where;
+        Tally tally;
+        for (const NamedRay& r : first_and_random_rays(scene))
+            ASSERT_NO_FATAL_FAILURE(check(scene, *targets, r.ray, tally, where + ", " + r.name));
+        // Both sides: mirror and glass are hit and kept, and walls are hit and dropped.
+        EXPECT_GT(tally.specular_hits, 4000u) << where;
+        EXPECT_GT(tally.dropped, 20000u) << where;
+    });
+}
+
+// The wavefront light pass asks the any-hit kernels about a batch against view(): every ISA's
+// kernel answers as may_hit does, ray by ray.
+TEST(SpecularTargets, TheAnyHitKernelsOnTheViewAnswerAsMayHit) {
+    for_each_accuracy([](const Scene& scene, const std::string& where) {
+        const std::optional<SpecularTargets> targets = SpecularTargets::of(scene);
+        ASSERT_TRUE(targets) << where;
+        const std::vector<NamedRay> rays = first_and_random_rays(scene);
+        ShadowQueue queue;
+        queue.reserve(rays.size());
+        for (const NamedRay& r : rays) queue.push(ShadowRay{r.ray, std::numeric_limits<float>::infinity(), glm::vec3(1.0f)}, 0);
+        std::size_t kept = 0;
+        for (const NamedRay& r : rays) kept += targets->may_hit(r.ray);
+        // Both answers are asked about.
+        EXPECT_GT(kept, 4000u) << where;
+        EXPECT_GT(rays.size() - kept, 20000u) << where;
+        for (const Isa isa : kAllIsas) {
+            if (!cpu_supports(isa)) continue;
+            std::fill(queue.occluded.begin(), queue.occluded.end(), uint8_t(2));
+            intersect_kernels(isa, scene.settings.accuracy).any_raypacket(targets->view(), ray_view(queue), queue.occluded.data());
+            for (std::size_t i = 0; i < rays.size(); ++i)
+                ASSERT_EQ(queue.occluded[i], uint8_t(targets->may_hit(rays[i].ray)))
+                    << where << ", " << isa_name(isa) << " kernels, " << rays[i].name << " from (" << rays[i].ray.origin.x << ", "
+                    << rays[i].ray.origin.y << ", " << rays[i].ray.origin.z << ") along (" << rays[i].ray.direction.x << ", "
+                    << rays[i].ray.direction.y << ", " << rays[i].ray.direction.z << ")";
+        }
+    });
 }
 
 TEST(SpecularTargets, NoneWhereTheyWouldCostMore) {

@@ -95,6 +95,9 @@ public:
     // primitive (specular_targets.h), so its first hit would end it. The image is the same
     // whether such a ray is traced or not.
     bool first_ray_counts(const Ray& ray) const { return !specular_targets_ || specular_targets_->may_hit(ray); }
+    // The same test for a batch of rays, through the any-hit kernels: null where every first
+    // ray counts.
+    const SpecularTargets* specular_targets() const { return specular_targets_ ? &*specular_targets_ : nullptr; }
     // What the path does at the surface `hit` of `at`, its `vertex`-th (1 for the first hit).
     // `textured`: scratch for the hit's material with its textures looked up (material_at_hit.h),
     // the caller's, so that a loop over vertices constructs it once.

@@ -1,6 +1,7 @@
 #include "kernels/caustics/light_tracing_pass.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -57,22 +58,34 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, uin
                                             std::vector<Photon>* photons, RayCounts& counts) const {
     ws.rays.count = 0;
     ws.photons.clear();
+    // The first rays that count (LightPathTracer::first_ray_counts) go to ws.rays in path order:
+    // with specular targets, every first ray is queued in ws.connections and the any-hit kernels
+    // test the batch against the targets alone.
+    const SpecularTargets* targets = tracer_.specular_targets();
+    ws.connections.count = 0;
     // Which start the paths take, decided once for the batch (LightPathTracer::start).
     const auto start_all = [&](auto&& start) {
         for (uint64_t index = first; index < end; ++index) {
             const uint32_t slot = uint32_t(index - first);
             ws.key[slot] = light_path_key(scene_.settings.seed, index, sample);
             const auto r = start(ws.key[slot]);
-            if (r && tracer_.first_ray_counts(r->ray)) {
-                ws.power_r[slot] = r->power.x, ws.power_g[slot] = r->power.y, ws.power_b[slot] = r->power.z;
+            if (!r) continue;
+            ws.power_r[slot] = r->power.x, ws.power_g[slot] = r->power.y, ws.power_b[slot] = r->power.z;
+            if (targets)
+                ws.connections.push(ShadowRay{r->ray, std::numeric_limits<float>::infinity(), r->weight}, slot);
+            else
                 ws.rays.push(r->ray, r->weight, slot, 0);
-            }
         }
     };
     if (tracer_.starts_at_area_lights_only())
         start_all([&](uint64_t key) { return tracer_.start(key); });
     else
         start_all([&](uint64_t key) { return tracer_.start_at_listed_lights(key); });
+    if (ws.connections.count > 0) {
+        context.kernels->any_raypacket(targets->view(), ray_view(ws.connections), ws.connections.occluded.data());
+        for (std::size_t i = 0; i < ws.connections.count; ++i)
+            if (ws.connections.occluded[i]) ws.rays.push(ws.connections.ray(i), ws.connections.contribution(i), ws.connections.path[i], 0);
+    }
     counts.light_paths += end - first;
     for (uint32_t vertex = 1; ws.rays.count > 0; ++vertex) {
         counts.light_rays += ws.rays.count;

@@ -22,8 +22,17 @@ std::optional<SpecularTargets> SpecularTargets::of(const Scene& scene) {
         if (specular(scene.spheres.material[i])) {
             if (t.triangles_.size() + t.spheres_.size() == kMostPrimitives) return std::nullopt;
             t.spheres_.push_back(i);
+            t.sphere_x_.push_back(scene.spheres.cx[i]), t.sphere_y_.push_back(scene.spheres.cy[i]);
+            t.sphere_z_.push_back(scene.spheres.cz[i]), t.sphere_radius_.push_back(scene.spheres.radius[i]);
         }
+    t.triangle_rows_ = triangle_rows(scene.triangles, t.triangles_);
     return t;
+}
+
+SceneView SpecularTargets::view() const {
+    return {triangle_view(triangle_rows_),
+            {sphere_x_.data(), sphere_y_.data(), sphere_z_.data(), sphere_radius_.data(), uint32_t(spheres_.size()),
+             triangle_rows_.count}};
 }
 
 bool SpecularTargets::may_hit(const Ray& ray) const {

@@ -9,7 +9,9 @@
 //
 // Exact, not a bound: the same primitive tests the kernels' bits follow (primitive_intersect.h),
 // with no far limit, so the primitive a closest hit would find is found here too (an alpha test
-// can only take hits away). Kept only when the specular primitives are few (one flat loop a
+// can only take hits away). The wavefront light pass asks for a whole batch of first rays at
+// once: view() is the targets alone as a flat scene, for the any-hit kernels, whose answers are
+// may_hit's bit for bit (tests/specular_targets_test.cpp). Kept only when the specular primitives are few (one flat loop a
 // path); with many, or with instanced meshes that have a specular material, every first ray is
 // traced.
 
@@ -19,6 +21,8 @@
 
 #include "core/base/ray.h"
 #include "core/scene/scene.h"
+#include "kernels/primitives/soa_views.h"
+#include "kernels/primitives/triangle_rows.h"
 
 namespace wt {
 
@@ -31,10 +35,15 @@ public:
     static std::optional<SpecularTargets> of(const Scene& scene);
     // Whether `ray` meets some specular primitive at any distance.
     bool may_hit(const Ray& ray) const;
+    // The targets as a scene of their own: a ray is occluded in it (any_raypacket, t in (0, tmax)
+    // with tmax infinite) exactly when may_hit says yes. Valid while this object lives, unmoved.
+    SceneView view() const;
 
 private:
     const Scene* scene_ = nullptr;
     std::vector<uint32_t> triangles_, spheres_;  // indices into the scene's TriangleSoA and SphereSoA
+    TriangleRows triangle_rows_;                 // those triangles' rows, in that order
+    AlignedVector<float> sphere_x_, sphere_y_, sphere_z_, sphere_radius_;  // and those spheres'
 };
 
 }  // namespace wt

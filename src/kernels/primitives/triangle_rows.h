@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "core/base/aligned_vector.h"
 #include "core/geometry/geometry_soa.h"
@@ -30,6 +31,10 @@ struct TriangleRows {
 // tests read: TriangleSoA's vertex0, edges, scaled normal and vertices, bit for bit.
 TriangleRows triangle_rows(const TriangleSoA& t, std::size_t count);
 inline TriangleRows triangle_rows(const TriangleSoA& t) { return triangle_rows(t, t.size()); }
+// The rows of entries `entries` of `t`, in that order, which must keep the parallelograms first
+// (std::logic_error otherwise, or for an entry past the end): a flat loop over a few of a
+// scene's primitives (kernels/caustics/specular_targets.h).
+TriangleRows triangle_rows(const TriangleSoA& t, const std::vector<uint32_t>& entries);
 
 TriangleView triangle_view(const TriangleRows& t);
 
