@@ -75,29 +75,35 @@ bool LightPathTracer::blocked(const Ray& ray, float tmax) const {
 
 namespace {
 
-// The ray leaving area light point `light` cosine-weighted about its normal, `pdf_area` the
-// point's pdf (the light's pick included): Le cos / (pdf_area * cos / pi) is the emitted power
-// the path carries per unit of its pdf.
-[[gnu::always_inline]] inline std::optional<LightRay> area_light_ray(const LightSample& light, const UniformPair& direction,
-                                                                     float pdf_area) {
+// The ray leaving area light point `light` cosine-weighted about its normal, `power` as
+// AreaLightStart's.
+[[gnu::always_inline]] inline std::optional<LightRay> area_light_ray(const LightSample& light, const glm::vec3& power,
+                                                                     const UniformPair& direction) {
     LightRay r;
     r.ray.direction = glm::normalize(Frame(light.normal).to_world(sample_cosine_hemisphere(direction.first, direction.second)));
     if (!(glm::dot(r.ray.direction, light.normal) > 0.0f)) return std::nullopt;  // lost to rounding at the horizon
     r.ray.origin = offset_ray_origin(light.position, light.error, light.normal);
-    r.power = light.radiance * (kPi / pdf_area);
+    r.power = power;
     r.weight = glm::vec3(1.0f);
     return r;
 }
 
+glm::vec3 area_light_power(const LightSample& light, float pdf_area) { return light.radiance * (kPi / pdf_area); }
+
 }  // namespace
 
-std::optional<LightRay> LightPathTracer::start(uint64_t key) const {
+AreaLightStart LightPathTracer::area_light_start(uint64_t key) const {
     const VertexRandom random(key, 0);
     const UniformPair point = random.pair(light_dim::point_u);
     const UniformPair direction = random.pair(light_dim::direction_u);
     const LightSample light = scene_.lights.sample(scene_.triangles, random(light_dim::emitter), point.first, point.second);
     // The area lights' pdf alone: without a "lights" list they are picked with probability one.
-    return area_light_ray(light, direction, scene_.lights.pdf_area_alone());
+    return {light, area_light_power(light, scene_.lights.pdf_area_alone()), direction};
+}
+
+std::optional<LightRay> LightPathTracer::start(uint64_t key) const {
+    const AreaLightStart s = area_light_start(key);
+    return area_light_ray(s.light, s.power, s.direction);
 }
 
 std::optional<LightRay> LightPathTracer::start_at_listed_lights(uint64_t key) const {
@@ -110,7 +116,7 @@ std::optional<LightRay> LightPathTracer::start_at_listed_lights(uint64_t key) co
     if (which == -1) {
         // The table's pdf includes the area lights' pick (LightTable::set_selection_probability).
         const LightSample light = scene_.lights.sample(scene_.triangles, rescaled, point.first, point.second);
-        return area_light_ray(light, direction, light.pdf_area);
+        return area_light_ray(light, area_light_power(light, light.pdf_area), direction);
     }
     const EmittedRay e = which == -2 ? sample_emission(*lights.environment(), lights.bounds(), direction.first,
                                                        direction.second, point.first, point.second)

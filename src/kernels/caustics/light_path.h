@@ -46,6 +46,15 @@ struct LightRay {
     glm::vec3 weight;
 };
 
+// Where a path that starts at the area lights (LightPathTracer::start) leaves from: its point on a
+// light, with the power it carries, and the random numbers of its direction. The wavefront light
+// pass aims a batch of these at once (kernels/shading/area_light_rays.h).
+struct AreaLightStart {
+    LightSample light;
+    glm::vec3 power;  // Le pi / pdf_area: Le cos / (pdf_area cos / pi) for the cosine-weighted direction
+    UniformPair direction;
+};
+
 // A diffuse vertex's connection to the camera: the splat it adds if nothing blocks the ray.
 struct CameraConnection {
     Ray ray;
@@ -91,6 +100,8 @@ public:
     bool starts_at_area_lights_only() const { return starts_at_area_lights_only_; }
     std::optional<LightRay> start(uint64_t key) const;
     std::optional<LightRay> start_at_listed_lights(uint64_t key) const;
+    // start's point and power, before its direction is taken.
+    AreaLightStart area_light_start(uint64_t key) const;
     // Whether a path's first ray can add anything: false where it misses every specular
     // primitive (specular_targets.h), so its first hit would end it. The image is the same
     // whether such a ray is traced or not.

@@ -7,6 +7,8 @@
 
 #include "core/base/aligned_vector.h"
 #include "kernels/isa/intersect_dispatch.h"
+#include "kernels/isa/shade_kernels.h"
+#include "kernels/queues/light_point_queue.h"
 
 namespace wt {
 
@@ -18,14 +20,17 @@ struct LightPathWorkspace {
     AlignedVector<float> power_r, power_g, power_b;
     RayQueue rays, next_rays;
     HitQueue hits;
-    ShadowQueue connections;
+    ShadowQueue connections;  // the camera connections; before the first bounce, the first rays
+    LightPointQueue points;   // the starts at area lights, for the shade kernels
     std::vector<std::pair<uint32_t, Photon>> photons;  // by vertex, then slot: sorted to the paths' order
 
     explicit LightPathWorkspace(std::size_t paths) {
         key.resize(paths), power_r.resize(paths), power_g.resize(paths), power_b.resize(paths);
-        rays.reserve(paths), next_rays.reserve(paths), hits.reserve(paths), connections.reserve(paths);
+        rays.reserve(paths), next_rays.reserve(paths), hits.reserve(paths), connections.reserve(paths), points.reserve(paths);
     }
-    static constexpr std::size_t bytes_needed(std::size_t paths) { return paths * (8 + 12 + 2 * 45 + 16 + 45); }
+    static constexpr std::size_t bytes_needed(std::size_t paths) {
+        return paths * (8 + 12 + 2 * 45 + 16 + 45) + (paths + 2 * LightPointQueue::kPadding) * LightPointQueue::kBytesPerEntry;
+    }
     LightRay light_ray(std::size_t i) const {
         const uint32_t slot = rays.path[i];
         return {rays.ray(i), {power_r[slot], power_g[slot], power_b[slot]}, rays.throughput(i)};
@@ -53,39 +58,50 @@ void LightTracingPass::flush(Film& film, std::vector<CameraSplat>& buffer, RayCo
 
 // The paths [first, end) of one sample, advanced together vertex by vertex: the same vertex code
 // in the same order per path as LightPathTracer::trace, so the same splats.
-void LightTracingPass::trace_item_wavefront(const IntersectContext& context, uint32_t sample, uint64_t first,
-                                            uint64_t end, LightPathWorkspace& ws, std::vector<CameraSplat>& splats,
-                                            std::vector<Photon>* photons, RayCounts& counts) const {
+void LightTracingPass::trace_item_wavefront(const IntersectContext& context, const ShadeKernels& shade, uint32_t sample,
+                                            uint64_t first, uint64_t end, LightPathWorkspace& ws,
+                                            std::vector<CameraSplat>& splats, std::vector<Photon>* photons,
+                                            RayCounts& counts) const {
     ws.rays.count = 0;
     ws.photons.clear();
-    // The first rays that count (LightPathTracer::first_ray_counts) go to ws.rays in path order:
-    // with specular targets, every first ray is queued in ws.connections and the any-hit kernels
-    // test the batch against the targets alone.
-    const SpecularTargets* targets = tracer_.specular_targets();
+    // Every started path's first ray, in path order, in ws.connections: where it misses every
+    // specular target (LightPathTracer::first_ray_counts, asked of the batch through the any-hit
+    // kernels) its first hit would end it, so it is not traced.
     ws.connections.count = 0;
-    // Which start the paths take, decided once for the batch (LightPathTracer::start).
-    const auto start_all = [&](auto&& start) {
+    if (tracer_.starts_at_area_lights_only() && shade.width > 1) {
+        // The points and powers here, the rays by the shade kernels (area_light_rays.h).
+        ws.points.count = 0;
         for (uint64_t index = first; index < end; ++index) {
             const uint32_t slot = uint32_t(index - first);
             ws.key[slot] = light_path_key(scene_.settings.seed, index, sample);
-            const auto r = start(ws.key[slot]);
-            if (!r) continue;
-            ws.power_r[slot] = r->power.x, ws.power_g[slot] = r->power.y, ws.power_b[slot] = r->power.z;
-            if (targets)
-                ws.connections.push(ShadowRay{r->ray, std::numeric_limits<float>::infinity(), r->weight}, slot);
-            else
-                ws.rays.push(r->ray, r->weight, slot, 0);
+            const AreaLightStart s = tracer_.area_light_start(ws.key[slot]);
+            ws.power_r[slot] = s.power.x, ws.power_g[slot] = s.power.y, ws.power_b[slot] = s.power.z;
+            ws.points.push(s.light.position, s.light.error, s.light.normal, s.direction.first, s.direction.second, slot);
         }
-    };
-    if (tracer_.starts_at_area_lights_only())
-        start_all([&](uint64_t key) { return tracer_.start(key); });
-    else
-        start_all([&](uint64_t key) { return tracer_.start_at_listed_lights(key); });
-    if (ws.connections.count > 0) {
-        context.kernels->any_raypacket(targets->view(), ray_view(ws.connections), ws.connections.occluded.data());
-        for (std::size_t i = 0; i < ws.connections.count; ++i)
-            if (ws.connections.occluded[i]) ws.rays.push(ws.connections.ray(i), ws.connections.contribution(i), ws.connections.path[i], 0);
+        shade.aim_area_light_rays(ws.points, ws.connections);
+    } else {
+        // Which start the paths take, decided once for the batch (LightPathTracer::start).
+        const auto start_all = [&](auto&& start) {
+            for (uint64_t index = first; index < end; ++index) {
+                const uint32_t slot = uint32_t(index - first);
+                ws.key[slot] = light_path_key(scene_.settings.seed, index, sample);
+                const auto r = start(ws.key[slot]);
+                if (!r) continue;
+                ws.power_r[slot] = r->power.x, ws.power_g[slot] = r->power.y, ws.power_b[slot] = r->power.z;
+                ws.connections.push(ShadowRay{r->ray, std::numeric_limits<float>::infinity(), r->weight}, slot);
+            }
+        };
+        if (tracer_.starts_at_area_lights_only())
+            start_all([&](uint64_t key) { return tracer_.start(key); });
+        else
+            start_all([&](uint64_t key) { return tracer_.start_at_listed_lights(key); });
     }
+    const SpecularTargets* targets = tracer_.specular_targets();
+    if (targets && ws.connections.count > 0)
+        context.kernels->any_raypacket(targets->view(), ray_view(ws.connections), ws.connections.occluded.data());
+    for (std::size_t i = 0; i < ws.connections.count; ++i)
+        if (!targets || ws.connections.occluded[i])
+            ws.rays.push(ws.connections.ray(i), ws.connections.contribution(i), ws.connections.path[i], 0);
     counts.light_paths += end - first;
     for (uint32_t vertex = 1; ws.rays.count > 0; ++vertex) {
         counts.light_rays += ws.rays.count;
@@ -131,6 +147,7 @@ void LightTracingPass::render(Film& film, uint32_t sample_begin, uint32_t sample
     const uint64_t items_per_sample = (paths_per_sample_ + kPathsPerItem - 1) / kPathsPerItem;
     const uint64_t items = items_per_sample * (sample_end - sample_begin);
     if (photons) photons->start_batch(sample_begin, sample_end, items_per_sample);
+    const ShadeKernels* shade = wavefront ? &shade_kernels(wavefront->kernels->isa) : nullptr;
     pool.parallel_for(std::size_t(items), [&](std::size_t item, int worker) {
         const uint32_t sample = sample_begin + uint32_t(item / items_per_sample);
         const uint64_t first = (item % items_per_sample) * kPathsPerItem;
@@ -141,7 +158,7 @@ void LightTracingPass::render(Film& film, uint32_t sample_begin, uint32_t sample
         if (wavefront) {
             auto& ws = workspaces_[std::size_t(worker)];
             if (!ws) ws = std::make_unique<LightPathWorkspace>(std::size_t(kPathsPerItem));
-            trace_item_wavefront(*wavefront, sample, first, end, *ws, buffer, item_photons, c);
+            trace_item_wavefront(*wavefront, *shade, sample, first, end, *ws, buffer, item_photons, c);
         } else {
             for (uint64_t path = first; path < end; ++path) tracer_.trace(path, sample, c, buffer, nullptr, item_photons);
         }

@@ -27,6 +27,7 @@
 namespace wt {
 
 struct LightPathWorkspace;
+struct ShadeKernels;
 
 class LightTracingPass {
 public:
@@ -48,8 +49,8 @@ public:
                 const IntersectContext* wavefront, PhotonMaps* photons = nullptr);
 
 private:
-    void trace_item_wavefront(const IntersectContext& context, uint32_t sample, uint64_t first, uint64_t end,
-                              LightPathWorkspace& ws, std::vector<CameraSplat>& splats, std::vector<Photon>* photons,
+    void trace_item_wavefront(const IntersectContext& context, const ShadeKernels& shade, uint32_t sample, uint64_t first,
+                              uint64_t end, LightPathWorkspace& ws, std::vector<CameraSplat>& splats, std::vector<Photon>* photons,
                               RayCounts& counts) const;
     void flush(Film& film, std::vector<CameraSplat>& buffer, RayCounts& counts);
 

@@ -1,5 +1,6 @@
 // The shade kernels at width 8, compiled with the avx2 target flags (src/kernels/CMakeLists.txt).
 #include "kernels/isa/shade_kernels.h"
+#include "kernels/shading/area_light_rays.h"
 #include "kernels/shading/diffuse_continuation.h"
 #include "kernels/shading/diffuse_light_samples.h"
 #include "kernels/shading/surface_points.h"
@@ -7,6 +8,6 @@
 namespace wt {
 
 const ShadeKernels kShadeAvx2 = {Isa::avx2, 8, &shading::surface_points<8>, &shading::continue_diffuse_vertices<8>,
-                                   &shading::sample_diffuse_lights<8>};
+                                   &shading::sample_diffuse_lights<8>, &shading::aim_area_light_rays<8>};
 
 }  // namespace wt

@@ -1,5 +1,6 @@
 // The shade kernels at width 16, compiled with the avx512 target flags (src/kernels/CMakeLists.txt).
 #include "kernels/isa/shade_kernels.h"
+#include "kernels/shading/area_light_rays.h"
 #include "kernels/shading/diffuse_continuation.h"
 #include "kernels/shading/diffuse_light_samples.h"
 #include "kernels/shading/surface_points.h"
@@ -7,6 +8,6 @@
 namespace wt {
 
 const ShadeKernels kShadeAvx512 = {Isa::avx512, 16, &shading::surface_points<16>, &shading::continue_diffuse_vertices<16>,
-                                   &shading::sample_diffuse_lights<16>};
+                                   &shading::sample_diffuse_lights<16>, &shading::aim_area_light_rays<16>};
 
 }  // namespace wt

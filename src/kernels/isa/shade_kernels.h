@@ -15,6 +15,7 @@ struct Scene;
 struct SurfaceChunk;
 struct DiffuseLightSampling;
 struct DiffuseVertexQueue;
+struct LightPointQueue;
 struct RayQueue;
 struct ShadowQueue;
 
@@ -31,6 +32,9 @@ struct ShadeKernels {
     // The light samples of every vertex of the queue that has them, each vertex's in index order;
     // those that can contribute are appended to `shadows` (kernels/shading/diffuse_light_samples.h).
     void (*sample_diffuse_lights)(const DiffuseVertexQueue&, const DiffuseLightSampling&, ShadowQueue& shadows);
+    // The first rays of light paths from their points on area lights, in the queue's order, those
+    // above the light appended to `rays` (kernels/shading/area_light_rays.h).
+    void (*aim_area_light_rays)(const LightPointQueue&, ShadowQueue& rays);
 };
 
 // Defined in shade_<isa>.cpp, each compiled with its own target flags.

@@ -1,5 +1,6 @@
 // The shade kernels at width 1, compiled with the scalar target flags (src/kernels/CMakeLists.txt).
 #include "kernels/isa/shade_kernels.h"
+#include "kernels/shading/area_light_rays.h"
 #include "kernels/shading/diffuse_continuation.h"
 #include "kernels/shading/diffuse_light_samples.h"
 #include "kernels/shading/surface_points.h"
@@ -7,6 +8,6 @@
 namespace wt {
 
 const ShadeKernels kShadeScalar = {Isa::scalar, 1, &shading::surface_points<1>, &shading::continue_diffuse_vertices<1>,
-                                   &shading::sample_diffuse_lights<1>};
+                                   &shading::sample_diffuse_lights<1>, &shading::aim_area_light_rays<1>};
 
 }  // namespace wt

@@ -67,9 +67,10 @@ inline vfloat<N> next_float_down(vfloat<N> v) {
     return -next_float_up<N>(-v);
 }
 
-// offset_ray_origin(p, error, n) (core/base/ray_offset.h).
+// offset_ray_origin(p, error, n) (core/base/ray_offset.h). Always inlined: with three kernels
+// calling it, GCC kept the scalar kernels' copy out of line, a call per lane.
 template <int N>
-inline Lanes3<N> offset_ray_origin(const Lanes3<N>& p, const Lanes3<N>& error, const Lanes3<N>& n) {
+[[gnu::always_inline]] inline Lanes3<N> offset_ray_origin(const Lanes3<N>& p, const Lanes3<N>& error, const Lanes3<N>& n) {
     const vfloat<N> distance = simd::abs(n.x) * error.x + simd::abs(n.y) * error.y + simd::abs(n.z) * error.z;
     const auto moved = [&](vfloat<N> coordinate, vfloat<N> normal) {
         const vfloat<N> offset = distance * normal;
