@@ -133,9 +133,14 @@ std::optional<LightRay> LightPathTracer::start_at_listed_lights(uint64_t key) co
 // this light path meets the light after as many vertices of its own.
 LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit,
                                        std::optional<Material>& textured) const {
+    return at_vertex(key, vertex, at, hit, surface_at(scene_, at.ray, hit), textured);
+}
+
+// (`surface` by value: a normal map may change its shading normal.)
+LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit,
+                                       SurfacePoint surface, std::optional<Material>& textured) const {
     const RenderSettings& settings = scene_.settings;
     const Ray& ray = at.ray;
-    SurfacePoint surface = surface_at(scene_, ray, hit);  // a normal map may change its shading normal
     const Material& m = material_at(scene_, hit, surface, ray, false, textured);
     LightVertex out;
     if (!m.is_specular()) {

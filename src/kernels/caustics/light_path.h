@@ -114,6 +114,10 @@ public:
     // the caller's, so that a loop over vertices constructs it once.
     LightVertex at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit,
                           std::optional<Material>& textured) const;
+    // The same with the hit's surface point (surface_at) already computed: by the surface kernel
+    // for a batch (kernels/shading/surface_points.h), the same bits.
+    LightVertex at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit, SurfacePoint surface,
+                          std::optional<Material>& textured) const;
 
     // Light path `index` of sample `sample`, one ray at a time: appends a splat to `splats` for
     // each diffuse vertex the camera sees, if the path's first bounce was specular. The values are

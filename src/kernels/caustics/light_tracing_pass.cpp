@@ -9,6 +9,7 @@
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/queues/light_point_queue.h"
+#include "kernels/queues/surface_chunk.h"
 
 namespace wt {
 
@@ -22,6 +23,7 @@ struct LightPathWorkspace {
     HitQueue hits;
     ShadowQueue connections;  // the camera connections; before the first bounce, the first rays
     LightPointQueue points;   // the starts at area lights, for the shade kernels
+    SurfaceChunk surfaces;    // the surface points of a chunk of the rays' hits, by the shade kernels
     std::vector<std::pair<uint32_t, Photon>> photons;  // by vertex, then slot: sorted to the paths' order
 
     explicit LightPathWorkspace(std::size_t paths) {
@@ -29,7 +31,8 @@ struct LightPathWorkspace {
         rays.reserve(paths), next_rays.reserve(paths), hits.reserve(paths), connections.reserve(paths), points.reserve(paths);
     }
     static constexpr std::size_t bytes_needed(std::size_t paths) {
-        return paths * (8 + 12 + 2 * 45 + 16 + 45) + (paths + 2 * LightPointQueue::kPadding) * LightPointQueue::kBytesPerEntry;
+        return paths * (8 + 12 + 2 * 45 + 16 + 45) + (paths + 2 * LightPointQueue::kPadding) * LightPointQueue::kBytesPerEntry +
+               SurfaceChunk::kBytes;
     }
     LightRay light_ray(std::size_t i) const {
         const uint32_t slot = rays.path[i];
@@ -103,6 +106,7 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, con
         if (!targets || ws.connections.occluded[i])
             ws.rays.push(ws.connections.ray(i), ws.connections.contribution(i), ws.connections.path[i], 0);
     counts.light_paths += end - first;
+    const bool surface_kernel = shade.width > 1 && surface_kernel_covers(scene_);
     for (uint32_t vertex = 1; ws.rays.count > 0; ++vertex) {
         counts.light_rays += ws.rays.count;
         intersect_closest_stage(context, ws.rays, ws.hits, false);
@@ -110,10 +114,16 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, con
         ws.connections.count = 0;
         std::optional<Material> textured;  // at_vertex's scratch
         for (std::size_t i = 0; i < ws.rays.count; ++i) {
+            // The surface points a chunk at a time by the shade kernels, as the camera paths' (shade_queue.h).
+            const std::size_t in_chunk = i % SurfaceChunk::kSize;
+            if (surface_kernel && in_chunk == 0)
+                shade.surface_points(scene_, ws.rays, ws.hits, i, std::min(SurfaceChunk::kSize, ws.rays.count - i), ws.surfaces);
             const Hit hit = ws.hits.hit(i);
             if (!hit.found()) continue;
             const uint32_t slot = ws.rays.path[i];
-            const LightVertex v = tracer_.at_vertex(ws.key[slot], vertex, ws.light_ray(i), hit, textured);
+            const LightVertex v = surface_kernel ? tracer_.at_vertex(ws.key[slot], vertex, ws.light_ray(i), hit,
+                                                                     ws.surfaces.at(in_chunk), textured)
+                                                 : tracer_.at_vertex(ws.key[slot], vertex, ws.light_ray(i), hit, textured);
             if (v.connection)
                 ws.connections.push(ShadowRay{v.connection->ray, v.connection->tmax, v.connection->splat.value},
                                     v.connection->splat.pixel);
