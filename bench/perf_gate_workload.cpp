@@ -20,6 +20,8 @@
 //   perf_gate_workload SCENE shade ISA smooth       the same on the BVH cases' scene, whose sphere
 //                                                   has vertex normals: shading normals blended,
 //                                                   the folded BSDF at its vertices
+//   perf_gate_workload SCENE lightstart ISA         the shade kernels' first rays of light paths
+//                                                   (area_light_rays.h) from the scene's area lights
 
 #include <algorithm>
 #include <cstdio>
@@ -38,6 +40,8 @@
 #include "core/path/path_vertex.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/isa/shade_kernels.h"
+#include "kernels/caustics/light_path.h"
+#include "kernels/queues/light_point_queue.h"
 #include "kernels/queues/ray_queues.h"
 #include "kernels/queues/surface_chunk.h"
 #include "displaced_sphere.h"
@@ -76,7 +80,8 @@ int usage() {
     std::fprintf(stderr, "usage: perf_gate_workload SCENE intersect ISA raypacket|primpacket|bvh|bvhpackets|bvhinterleaved closest|any\n"
                          "       perf_gate_workload SCENE build\n"
                          "       perf_gate_workload SCENE render ISA [AOV,...]\n"
-                         "       perf_gate_workload SCENE shade ISA [smooth]\n");
+                         "       perf_gate_workload SCENE shade ISA [smooth]\n"
+                         "       perf_gate_workload SCENE lightstart ISA\n");
     return 2;
 }
 
@@ -139,6 +144,31 @@ int main(int argc, char** argv) {
         CALLGRIND_TOGGLE_COLLECT;
         Checksum sum;
         for (const float value : film.resolve()) sum.add(value);
+        sum.print();
+        return 0;
+    }
+    if (what == "lightstart" && argc == 4) {
+        const Scene scene = build_scene(description);
+        const LightPathTracer tracer(scene, nullptr);
+        constexpr uint32_t kPaths = 20000;
+        LightPointQueue points;
+        points.reserve(kPaths);
+        for (uint32_t index = 0; index < kPaths; ++index) {
+            const AreaLightStart s = tracer.area_light_start(light_path_key(0, index, 0));
+            points.push(s.light.position, s.light.error, s.light.normal, s.direction.first, s.direction.second, index);
+        }
+        ShadowQueue rays;
+        rays.reserve(kPaths);
+        const ShadeKernels& k = shade_kernels(*isa);
+        CALLGRIND_TOGGLE_COLLECT;
+        k.aim_area_light_rays(points, rays);
+        CALLGRIND_TOGGLE_COLLECT;
+        std::printf("rays %zu\n", rays.count);
+        Checksum sum;
+        for (std::size_t i = 0; i < rays.count; ++i) {
+            sum.add(rays.path[i]), sum.add(rays.ox[i]), sum.add(rays.oy[i]), sum.add(rays.oz[i]);
+            sum.add(rays.dx[i]), sum.add(rays.dy[i]), sum.add(rays.dz[i]);
+        }
         sum.print();
         return 0;
     }
