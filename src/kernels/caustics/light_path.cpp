@@ -153,7 +153,7 @@ LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const Ligh
     if (int(vertex) + 1 >= settings.max_bounces) return out;
     const VertexRandom random(key, vertex);
     const UniformPair u = random.pair(light_dim::direction_u);
-    const float u_choice = random(light_dim::specular_choice);
+    const float u_choice = random(light_dim::specular_choice);  // (with roulette's, one pair: queue_specular)
     const BsdfSample s = surface.smooth ? sample_bsdf_about_shading_normal(m, surface.normal, surface.shading_normal,
                                                                            ray.direction, u.first, u.second, u_choice,
                                                                            settings.accuracy.fresnel)
@@ -172,6 +172,19 @@ LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const Ligh
     const glm::vec3 side = glm::dot(s.direction, surface.normal) > 0.0f ? surface.normal : -surface.normal;
     out.next = LightRay{{offset_ray_origin(surface.position, surface.error, side), s.direction}, at.power, weight};
     return out;
+}
+
+bool LightPathTracer::queue_specular(uint64_t key, uint32_t vertex, const LightRay& at, const SurfacePoint& surface,
+                                     uint32_t slot, SpecularVertexQueue& q) const {
+    const Material& m = scene_.materials[surface.material];
+    if (!(m.type == MaterialType::mirror || m.type == MaterialType::glass) || m.has_textures() || surface.smooth) return false;
+    if (int(vertex) + 1 >= scene_.settings.max_bounces) return false;  // at_vertex ends the path: nothing to queue
+    static_assert(light_dim::roulette == light_dim::specular_choice + 1 && light_dim::specular_choice % 2 == 0,
+                  "the choice and roulette are one pair");
+    const UniformPair draws = VertexRandom(key, vertex).pair(light_dim::specular_choice);
+    q.push(surface.position, surface.error, surface.normal, at.ray.direction, at.weight, m.type == MaterialType::glass,
+           m.reflectance, m.ior, draws.first, draws.second, slot);
+    return true;
 }
 
 void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats,

@@ -21,6 +21,7 @@
 #include "kernels/accel/bvh_view.h"
 #include "kernels/caustics/specular_targets.h"
 #include "kernels/photons/photon.h"
+#include "kernels/queues/specular_vertex_queue.h"
 #include "kernels/work/render_stats.h"
 
 namespace wt {
@@ -118,6 +119,14 @@ public:
     // for a batch (kernels/shading/surface_points.h), the same bits.
     LightVertex at_vertex(uint64_t key, uint32_t vertex, const LightRay& at, const Hit& hit, SurfacePoint surface,
                           std::optional<Material>& textured) const;
+    // at_vertex's work at a flat, untextured mirror or glass that the path can leave, left to the
+    // shade kernels (kernels/shading/specular_continuation.h): queues the vertex in `q` with its
+    // random numbers and returns true; false, and nothing queued, for any other vertex. Such a
+    // vertex has no camera connection and no photon, only the next ray.
+    bool queue_specular(uint64_t key, uint32_t vertex, const LightRay& at, const SurfacePoint& surface, uint32_t slot,
+                        SpecularVertexQueue& q) const;
+    // Whether the specular kernel's vertices at `vertex` play Russian roulette (as at_vertex's).
+    bool roulette_at(uint32_t vertex) const { return int(vertex) > scene_.settings.rr_start_bounce; }
 
     // Light path `index` of sample `sample`, one ray at a time: appends a splat to `splats` for
     // each diffuse vertex the camera sees, if the path's first bounce was specular. The values are

@@ -22,17 +22,22 @@ struct LightPathWorkspace {
     RayQueue rays, next_rays;
     HitQueue hits;
     ShadowQueue connections;  // the camera connections; before the first bounce, the first rays
+    // The shade kernels' queues hold a chunk of entries at a time (as the camera paths' diffuse
+    // vertices, kernels/queues/diffuse_vertex_queue.h): read back while in the core's cache.
+    static constexpr std::size_t kChunk = 256;
     LightPointQueue points;   // the starts at area lights, for the shade kernels
     SurfaceChunk surfaces;    // the surface points of a chunk of the rays' hits, by the shade kernels
+    SpecularVertexQueue specular;  // flat mirror and glass vertices of a bounce, for the shade kernels
     std::vector<std::pair<uint32_t, Photon>> photons;  // by vertex, then slot: sorted to the paths' order
 
     explicit LightPathWorkspace(std::size_t paths) {
         key.resize(paths), power_r.resize(paths), power_g.resize(paths), power_b.resize(paths);
-        rays.reserve(paths), next_rays.reserve(paths), hits.reserve(paths), connections.reserve(paths), points.reserve(paths);
+        rays.reserve(paths), next_rays.reserve(paths), hits.reserve(paths), connections.reserve(paths);
+        points.reserve(kChunk), specular.reserve(kChunk);
     }
     static constexpr std::size_t bytes_needed(std::size_t paths) {
-        return paths * (8 + 12 + 2 * 45 + 16 + 45) + (paths + 2 * LightPointQueue::kPadding) * LightPointQueue::kBytesPerEntry +
-               SurfaceChunk::kBytes;
+        return paths * (8 + 12 + 2 * 45 + 16 + 45) + (kChunk + 2 * LightPointQueue::kPadding) * LightPointQueue::kBytesPerEntry +
+               (kChunk + 2 * SpecularVertexQueue::kPadding) * SpecularVertexQueue::kBytesPerEntry + SurfaceChunk::kBytes;
     }
     LightRay light_ray(std::size_t i) const {
         const uint32_t slot = rays.path[i];
@@ -72,7 +77,8 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, con
     // kernels) its first hit would end it, so it is not traced.
     ws.connections.count = 0;
     if (tracer_.starts_at_area_lights_only() && shade.width > 1) {
-        // The points and powers here, the rays by the shade kernels (area_light_rays.h).
+        // The points and powers here, the rays by the shade kernels (area_light_rays.h), a chunk
+        // at a time.
         ws.points.count = 0;
         for (uint64_t index = first; index < end; ++index) {
             const uint32_t slot = uint32_t(index - first);
@@ -80,8 +86,11 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, con
             const AreaLightStart s = tracer_.area_light_start(ws.key[slot]);
             ws.power_r[slot] = s.power.x, ws.power_g[slot] = s.power.y, ws.power_b[slot] = s.power.z;
             ws.points.push(s.light.position, s.light.error, s.light.normal, s.direction.first, s.direction.second, slot);
+            if (ws.points.count == LightPathWorkspace::kChunk || index + 1 == end) {
+                shade.aim_area_light_rays(ws.points, ws.connections);
+                ws.points.count = 0;
+            }
         }
-        shade.aim_area_light_rays(ws.points, ws.connections);
     } else {
         // Which start the paths take, decided once for the batch (LightPathTracer::start).
         const auto start_all = [&](auto&& start) {
@@ -112,6 +121,11 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, con
         intersect_closest_stage(context, ws.rays, ws.hits, false);
         ws.next_rays.count = 0;
         ws.connections.count = 0;
+        ws.specular.count = 0;
+        const auto continue_specular = [&] {
+            shade.continue_specular(ws.specular, tracer_.roulette_at(vertex), scene_.settings.accuracy.fresnel, ws.next_rays);
+            ws.specular.count = 0;
+        };
         std::optional<Material> textured;  // at_vertex's scratch
         for (std::size_t i = 0; i < ws.rays.count; ++i) {
             // The surface points a chunk at a time by the shade kernels, as the camera paths' (shade_queue.h).
@@ -121,15 +135,23 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, con
             const Hit hit = ws.hits.hit(i);
             if (!hit.found()) continue;
             const uint32_t slot = ws.rays.path[i];
-            const LightVertex v = surface_kernel ? tracer_.at_vertex(ws.key[slot], vertex, ws.light_ray(i), hit,
-                                                                     ws.surfaces.at(in_chunk), textured)
-                                                 : tracer_.at_vertex(ws.key[slot], vertex, ws.light_ray(i), hit, textured);
+            const LightRay at = ws.light_ray(i);
+            // Flat mirrors and glass go to the shade kernels' queue, continued after this loop.
+            if (surface_kernel && tracer_.queue_specular(ws.key[slot], vertex, at, ws.surfaces.at(in_chunk), slot, ws.specular)) {
+                if (ws.specular.count == LightPathWorkspace::kChunk) continue_specular();
+                continue;
+            }
+            const LightVertex v = surface_kernel ? tracer_.at_vertex(ws.key[slot], vertex, at, hit, ws.surfaces.at(in_chunk), textured)
+                                                 : tracer_.at_vertex(ws.key[slot], vertex, at, hit, textured);
             if (v.connection)
                 ws.connections.push(ShadowRay{v.connection->ray, v.connection->tmax, v.connection->splat.value},
                                     v.connection->splat.pixel);
             if (photons && v.photon) ws.photons.emplace_back(slot, *v.photon);
             if (v.next) ws.next_rays.push(v.next->ray, v.next->weight, slot, 0);
         }
+        // (The next rays' order within a bounce changes no bit: each path's photons are sorted
+        // back into vertex order below, and the film's sums are exact.)
+        if (ws.specular.count > 0) continue_specular();
         counts.camera_connections += ws.connections.count;
         if (ws.connections.count > 0) {
             if (context.bvh)

@@ -3,11 +3,13 @@
 #include "kernels/shading/area_light_rays.h"
 #include "kernels/shading/diffuse_continuation.h"
 #include "kernels/shading/diffuse_light_samples.h"
+#include "kernels/shading/specular_continuation.h"
 #include "kernels/shading/surface_points.h"
 
 namespace wt {
 
 const ShadeKernels kShadeAvx2 = {Isa::avx2, 8, &shading::surface_points<8>, &shading::continue_diffuse_vertices<8>,
-                                   &shading::sample_diffuse_lights<8>, &shading::aim_area_light_rays<8>};
+                                   &shading::sample_diffuse_lights<8>, &shading::aim_area_light_rays<8>,
+                                   &shading::continue_specular_vertices<8>};
 
 }  // namespace wt

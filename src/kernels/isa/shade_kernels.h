@@ -4,6 +4,7 @@
 // by the per-ISA translation units.
 
 #include <cstddef>
+#include <cstdint>
 
 #include "kernels/isa/intersect_kernels.h"
 
@@ -16,6 +17,8 @@ struct SurfaceChunk;
 struct DiffuseLightSampling;
 struct DiffuseVertexQueue;
 struct LightPointQueue;
+struct SpecularVertexQueue;
+enum class FresnelModel : uint8_t;
 struct RayQueue;
 struct ShadowQueue;
 
@@ -35,6 +38,10 @@ struct ShadeKernels {
     // The first rays of light paths from their points on area lights, in the queue's order, those
     // above the light appended to `rays` (kernels/shading/area_light_rays.h).
     void (*aim_area_light_rays)(const LightPointQueue&, ShadowQueue& rays);
+    // The light paths' flat mirror and glass vertices of one bounce, the paths that go on
+    // appended to `next` in the queue's order; `roulette` at this bounce
+    // (kernels/shading/specular_continuation.h).
+    void (*continue_specular)(const SpecularVertexQueue&, bool roulette, FresnelModel fresnel, RayQueue& next);
 };
 
 // Defined in shade_<isa>.cpp, each compiled with its own target flags.
