@@ -29,14 +29,17 @@ struct LightPathWorkspace {
     SurfaceChunk surfaces;    // the surface points of a chunk of the rays' hits, by the shade kernels
     SpecularVertexQueue specular;  // flat mirror and glass vertices of a bounce, for the shade kernels
     std::vector<std::pair<uint32_t, Photon>> photons;  // by vertex, then slot: sorted to the paths' order
+    std::vector<uint32_t> photon_starts;               // the sort's: where each slot's photons go
 
     explicit LightPathWorkspace(std::size_t paths) {
         key.resize(paths), power_r.resize(paths), power_g.resize(paths), power_b.resize(paths);
         rays.reserve(paths), next_rays.reserve(paths), hits.reserve(paths), connections.reserve(paths);
         points.reserve(kChunk), specular.reserve(kChunk);
     }
+    // Per path its key, power, two ray queues' entries, a hit, a connection and the photon sort's
+    // start; then the kernels' chunks.
     static constexpr std::size_t bytes_needed(std::size_t paths) {
-        return paths * (8 + 12 + 2 * 45 + 16 + 45) + (kChunk + 2 * LightPointQueue::kPadding) * LightPointQueue::kBytesPerEntry +
+        return paths * (8 + 12 + 2 * 45 + 16 + 45 + 4) + (kChunk + 2 * LightPointQueue::kPadding) * LightPointQueue::kBytesPerEntry +
                (kChunk + 2 * SpecularVertexQueue::kPadding) * SpecularVertexQueue::kBytesPerEntry + SurfaceChunk::kBytes;
     }
     LightRay light_ray(std::size_t i) const {
@@ -165,11 +168,14 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, con
     }
     if (!photons) return;
     counts.photons += ws.photons.size();
-    // Collected vertex by vertex; a stable sort by path makes them path by path, each path's in
-    // vertex order: what trace() gives.
-    std::stable_sort(ws.photons.begin(), ws.photons.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (const auto& p : ws.photons) photons->push_back(p.second);
+    // Collected vertex by vertex; a counting sort on the slot (stable: each path's keep their
+    // vertex order) places them path by path, what trace() gives.
+    ws.photon_starts.assign(std::size_t(end - first) + 1, 0);
+    for (const auto& p : ws.photons) ++ws.photon_starts[p.first + 1];
+    for (std::size_t slot = 0; slot + 1 < ws.photon_starts.size(); ++slot) ws.photon_starts[slot + 1] += ws.photon_starts[slot];
+    const std::size_t base = photons->size();
+    photons->resize(base + ws.photons.size());
+    for (const auto& p : ws.photons) (*photons)[base + ws.photon_starts[p.first]++] = p.second;
 }
 
 void LightTracingPass::render(Film& film, uint32_t sample_begin, uint32_t sample_end, ThreadPool& pool,
