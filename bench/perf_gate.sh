@@ -35,7 +35,7 @@ for isa in scalar sse4 avx2; do
 done
 cases+=("build" "render/scalar" "render/avx2" "shade/scalar" "shade/sse4" "shade/avx2")
 cases+=("shade/scalar/smooth" "shade/sse4/smooth" "shade/avx2/smooth")
-cases+=("lightstart/scalar" "lightstart/sse4" "lightstart/avx2")
+cases+=("lightstart/scalar" "lightstart/sse4" "lightstart/avx2" "specular/scalar" "specular/sse4" "specular/avx2")
 
 measure() {  # CASE -> "INSTRUCTIONS CHECKSUM": the collected region's count, the workload's checksum
   local args out count checksum
@@ -103,6 +103,7 @@ same_result render/scalar render/avx2
 same_result shade/{scalar,sse4,avx2}
 same_result shade/{scalar,sse4,avx2}/smooth
 same_result lightstart/{scalar,sse4,avx2}
+same_result specular/{scalar,sse4,avx2}
 
 # Ratios within this run: the SIMD kernels must keep their advantage over scalar.
 ratio() { awk -v a="${measured[$1]}" -v b="${measured[$2]}" 'BEGIN {printf "%.2f", a / b}'; }
@@ -123,6 +124,8 @@ check_ratio shade/scalar/smooth shade/avx2/smooth 4
 check_ratio shade/scalar/smooth shade/sse4/smooth 1.8
 check_ratio lightstart/scalar lightstart/avx2 4
 check_ratio lightstart/scalar lightstart/sse4 2.2
+check_ratio specular/scalar specular/avx2 4
+check_ratio specular/scalar specular/sse4 2.2
 
 if [ "$failures" -gt 0 ]; then
   echo "perf_gate: $failures check(s) failed. If the change is intended, run bench/perf_gate.sh build --update and commit the baseline."

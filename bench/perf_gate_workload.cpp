@@ -22,6 +22,9 @@
 //                                                   the folded BSDF at its vertices
 //   perf_gate_workload SCENE lightstart ISA         the shade kernels' first rays of light paths
 //                                                   (area_light_rays.h) from the scene's area lights
+//   perf_gate_workload SCENE specular ISA           the shade kernels' continuation of light paths
+//                                                   (specular_continuation.h) at the mirror and glass
+//                                                   those rays hit, with Russian roulette
 
 #include <algorithm>
 #include <cstdio>
@@ -41,7 +44,9 @@
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/isa/shade_kernels.h"
 #include "kernels/caustics/light_path.h"
+#include "kernels/accel/scene_intersect.h"
 #include "kernels/queues/light_point_queue.h"
+#include "kernels/queues/specular_vertex_queue.h"
 #include "kernels/queues/ray_queues.h"
 #include "kernels/queues/surface_chunk.h"
 #include "displaced_sphere.h"
@@ -81,7 +86,8 @@ int usage() {
                          "       perf_gate_workload SCENE build\n"
                          "       perf_gate_workload SCENE render ISA [AOV,...]\n"
                          "       perf_gate_workload SCENE shade ISA [smooth]\n"
-                         "       perf_gate_workload SCENE lightstart ISA\n");
+                         "       perf_gate_workload SCENE lightstart ISA\n"
+                         "       perf_gate_workload SCENE specular ISA\n");
     return 2;
 }
 
@@ -168,6 +174,35 @@ int main(int argc, char** argv) {
         for (std::size_t i = 0; i < rays.count; ++i) {
             sum.add(rays.path[i]), sum.add(rays.ox[i]), sum.add(rays.oy[i]), sum.add(rays.oz[i]);
             sum.add(rays.dx[i]), sum.add(rays.dy[i]), sum.add(rays.dz[i]);
+        }
+        sum.print();
+        return 0;
+    }
+    if (what == "specular" && argc == 4) {
+        const Scene scene = build_scene(description);
+        const LightPathTracer tracer(scene, nullptr);
+        constexpr uint32_t kVertex = 4;  // past rr_start_bounce: the roulette runs
+        SpecularVertexQueue queue;
+        queue.reserve(40000);
+        for (uint32_t index = 0; index < 40000; ++index) {
+            const uint64_t key = light_path_key(0, index, 0);
+            const auto r = tracer.start(key);
+            if (!r) continue;
+            const Hit hit = intersect_closest(scene, r->ray);
+            if (hit.found()) tracer.queue_specular(key, kVertex, *r, surface_at(scene, r->ray, hit), index, queue);
+        }
+        RayQueue next;
+        next.reserve(queue.count);
+        const ShadeKernels& k = shade_kernels(*isa);
+        CALLGRIND_TOGGLE_COLLECT;
+        k.continue_specular(queue, tracer.roulette_at(kVertex), scene.settings.accuracy.fresnel, next);
+        CALLGRIND_TOGGLE_COLLECT;
+        std::printf("vertices %zu, continued %zu\n", queue.count, next.count);
+        Checksum sum;
+        for (std::size_t i = 0; i < next.count; ++i) {
+            sum.add(next.path[i]), sum.add(next.ox[i]), sum.add(next.oy[i]), sum.add(next.oz[i]);
+            sum.add(next.dx[i]), sum.add(next.dy[i]), sum.add(next.dz[i]);
+            sum.add(next.throughput_r[i]), sum.add(next.throughput_g[i]), sum.add(next.throughput_b[i]);
         }
         sum.print();
         return 0;
