@@ -139,13 +139,18 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, con
             if (!hit.found()) continue;
             const uint32_t slot = ws.rays.path[i];
             const LightRay at = ws.light_ray(i);
-            // Flat mirrors and glass go to the shade kernels' queue, continued after this loop.
-            if (surface_kernel && tracer_.queue_specular(ws.key[slot], vertex, at, ws.surfaces.at(in_chunk), slot, ws.specular)) {
-                if (ws.specular.count == LightPathWorkspace::kChunk) continue_specular();
-                continue;
+            LightVertex v;
+            if (surface_kernel) {
+                const SurfacePoint surface = ws.surfaces.at(in_chunk);
+                // Flat mirrors and glass go to the shade kernels' queue, continued by the chunk.
+                if (tracer_.queue_specular(ws.key[slot], vertex, at, surface, slot, ws.specular)) {
+                    if (ws.specular.count == LightPathWorkspace::kChunk) continue_specular();
+                    continue;
+                }
+                v = tracer_.at_vertex(ws.key[slot], vertex, at, hit, surface, textured);
+            } else {
+                v = tracer_.at_vertex(ws.key[slot], vertex, at, hit, textured);
             }
-            const LightVertex v = surface_kernel ? tracer_.at_vertex(ws.key[slot], vertex, at, hit, ws.surfaces.at(in_chunk), textured)
-                                                 : tracer_.at_vertex(ws.key[slot], vertex, at, hit, textured);
             if (v.connection)
                 ws.connections.push(ShadowRay{v.connection->ray, v.connection->tmax, v.connection->splat.value},
                                     v.connection->splat.pixel);
