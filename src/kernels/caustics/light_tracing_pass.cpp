@@ -8,6 +8,7 @@
 #include "core/base/aligned_vector.h"
 #include "kernels/isa/intersect_dispatch.h"
 #include "kernels/isa/shade_kernels.h"
+#include "kernels/queues/kernel_padding.h"
 #include "kernels/queues/light_point_queue.h"
 #include "kernels/queues/surface_chunk.h"
 
@@ -39,8 +40,8 @@ struct LightPathWorkspace {
     // Per path its key, power, two ray queues' entries, a hit, a connection and the photon sort's
     // start; then the kernels' chunks.
     static constexpr std::size_t bytes_needed(std::size_t paths) {
-        return paths * (8 + 12 + 2 * 45 + 16 + 45 + 4) + (kChunk + 2 * LightPointQueue::kPadding) * LightPointQueue::kBytesPerEntry +
-               (kChunk + 2 * SpecularVertexQueue::kPadding) * SpecularVertexQueue::kBytesPerEntry + SurfaceChunk::kBytes;
+        return paths * (8 + 12 + 2 * 45 + 16 + 45 + 4) + padded_entries(kChunk) * LightPointQueue::kBytesPerEntry +
+               padded_entries(kChunk) * SpecularVertexQueue::kBytesPerEntry + SurfaceChunk::kBytes;
     }
     LightRay light_ray(std::size_t i) const {
         const uint32_t slot = rays.path[i];

@@ -17,6 +17,7 @@
 #include "core/base/aligned_vector.h"
 #include "core/materials/bsdf.h"
 #include "core/scene/scene.h"
+#include "kernels/queues/kernel_padding.h"
 
 namespace wt {
 
@@ -44,9 +45,8 @@ struct DiffuseContinuation {
 };
 
 struct DiffuseVertexQueue {
-    // The kernels load whole aligned vectors: at least this many entries past `count` are
-    // allocated, and what they hold is computed and thrown away.
-    static constexpr std::size_t kPadding = 16;
+    // The kernels load whole aligned vectors (kernel_padding.h).
+    static constexpr std::size_t kPadding = kKernelPadding;
 
     AlignedVector<float> px, py, pz;              // SurfacePoint::position
     AlignedVector<float> ex, ey, ez;              // SurfacePoint::error
@@ -93,7 +93,7 @@ struct DiffuseVertexQueue {
     // Room for `n` vertices (a chunk: chunk_for()) of `light_samples_per_vertex` samples each.
     void reserve(std::size_t n, std::size_t light_samples_per_vertex) {
         capacity = n;
-        stride = (n + 2 * kPadding - 1) / kPadding * kPadding;  // whole vectors: each sample's row stays aligned
+        stride = padded_entries(n);  // whole vectors: each sample's row stays aligned
         for (auto* a : {&px, &py, &pz, &ex, &ey, &ez, &nx, &ny, &nz, &snx, &sny, &snz, &dx, &dy, &dz, &throughput_r, &throughput_g, &throughput_b,
                         &albedo_r, &albedo_g, &albedo_b, &oren_nayar_a, &oren_nayar_b, &u0, &u1, &roulette})
             a->resize(stride);

@@ -12,14 +12,11 @@
 #include <glm/vec3.hpp>
 
 #include "core/base/aligned_vector.h"
+#include "kernels/queues/kernel_padding.h"
 
 namespace wt {
 
 struct LightPointQueue {
-    // The kernels load whole aligned vectors: this many entries past `count` are allocated, and
-    // what they hold is computed and thrown away.
-    static constexpr std::size_t kPadding = 16;
-
     AlignedVector<float> px, py, pz;  // LightSample::position
     AlignedVector<float> ex, ey, ez;  // LightSample::error
     AlignedVector<float> nx, ny, nz;  // LightSample::normal
@@ -30,7 +27,7 @@ struct LightPointQueue {
     static constexpr std::size_t kBytesPerEntry = 11 * sizeof(float) + sizeof(uint32_t);
 
     void reserve(std::size_t n) {
-        const std::size_t padded = (n + 2 * kPadding - 1) / kPadding * kPadding;
+        const std::size_t padded = padded_entries(n);  // (kernel_padding.h)
         for (auto* a : {&px, &py, &pz, &ex, &ey, &ez, &nx, &ny, &nz, &u0, &u1}) a->resize(padded);
         path.resize(padded);
     }

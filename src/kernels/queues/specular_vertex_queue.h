@@ -14,14 +14,11 @@
 #include <glm/vec3.hpp>
 
 #include "core/base/aligned_vector.h"
+#include "kernels/queues/kernel_padding.h"
 
 namespace wt {
 
 struct SpecularVertexQueue {
-    // The kernels load whole aligned vectors: this many entries past `count` are allocated, and
-    // what they hold is computed and thrown away.
-    static constexpr std::size_t kPadding = 16;
-
     AlignedVector<float> px, py, pz;  // SurfacePoint::position
     AlignedVector<float> ex, ey, ez;  // SurfacePoint::error
     AlignedVector<float> nx, ny, nz;  // SurfacePoint::normal (geometric)
@@ -37,7 +34,7 @@ struct SpecularVertexQueue {
     static constexpr std::size_t kBytesPerEntry = 21 * sizeof(float) + sizeof(uint32_t) + 1;
 
     void reserve(std::size_t n) {
-        const std::size_t padded = (n + 2 * kPadding - 1) / kPadding * kPadding;
+        const std::size_t padded = padded_entries(n);  // (kernel_padding.h)
         for (auto* a : {&px, &py, &pz, &ex, &ey, &ez, &nx, &ny, &nz, &dx, &dy, &dz, &weight_r, &weight_g, &weight_b,
                         &reflectance_r, &reflectance_g, &reflectance_b, &ior, &choice, &roulette})
             a->resize(padded);
