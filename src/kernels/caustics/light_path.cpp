@@ -162,7 +162,7 @@ LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const Ligh
     if (!s.valid) return out;
     glm::vec3 weight = at.weight * s.weight;
     if (surface.smooth) weight *= shading_normal_adjoint(surface, -ray.direction, s.direction);
-    if (int(vertex) > settings.rr_start_bounce) {
+    if (roulette_at(vertex)) {
         // As the camera paths' roulette: survival by the weight's largest channel, capped.
         const float q = fmin_float(0.95f, fmax_float(weight.x, fmax_float(weight.y, weight.z)));
         if (!(random(light_dim::roulette) < q)) return out;

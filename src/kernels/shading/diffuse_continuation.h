@@ -46,11 +46,9 @@ inline Lanes3<N> to_world_normalized(const Lanes3<N>& n, const Lanes3<N>& local)
     const vfloat<N> b = n.x * n.y * a;
     const Lanes3<N> tangent{1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x};
     const Lanes3<N> bitangent{b, sign + n.y * n.y * a, -n.y};
-    const Lanes3<N> w{local.x * tangent.x + local.y * bitangent.x + local.z * n.x,
-                      local.x * tangent.y + local.y * bitangent.y + local.z * n.y,
-                      local.x * tangent.z + local.y * bitangent.z + local.z * n.z};
-    const vfloat<N> inverse_length = 1.0f / simd::sqrt(dot(w, w));
-    return {w.x * inverse_length, w.y * inverse_length, w.z * inverse_length};
+    return normalized<N>(Lanes3<N>{local.x * tangent.x + local.y * bitangent.x + local.z * n.x,
+                                   local.x * tangent.y + local.y * bitangent.y + local.z * n.y,
+                                   local.x * tangent.z + local.y * bitangent.z + local.z * n.z});
 }
 
 // kFolds: the queue has smooth vertices (DiffuseVertexQueue::has_smooth); without it, the flat
@@ -88,16 +86,12 @@ void continue_diffuse_vertices_with(const DiffuseVertexQueue& q, const DiffuseCo
             // mirrored_to_side: below the geometric surface, mirrored through it and normalized;
             // the path ends if that is not strictly above it either.
             const vbool<N> below = ~(dot(sampled, n) > 0.0f);
-            const vfloat<N> twice = 2.0f * dot(sampled, n);
-            const Lanes3<N> reflected{sampled.x - twice * n.x, sampled.y - twice * n.y, sampled.z - twice * n.z};
-            const vfloat<N> inverse_length = 1.0f / simd::sqrt(dot(reflected, reflected));
-            const Lanes3<N> mirrored{reflected.x * inverse_length, reflected.y * inverse_length, reflected.z * inverse_length};
+            const Lanes3<N> mirrored = normalized<N>(reflect<N>(sampled, n));
             const vbool<N> mirrors = smooth & below;
             wi = select(mirrors, mirrored, sampled);
             alive = alive & ~(mirrors & ~(dot(mirrored, n) > 0.0f));
-            // folded_cosine_pdf at the direction taken, cos_geom about the facing normal.
-            const vfloat<N> cos_geom = dot(n, wi);
-            const Lanes3<N> image{wi.x - (2.0f * cos_geom) * n.x, wi.y - (2.0f * cos_geom) * n.y, wi.z - (2.0f * cos_geom) * n.z};
+            // folded_cosine_pdf at the direction taken: with its image mirrored about the facing normal.
+            const Lanes3<N> image = reflect<N>(wi, n);
             const vfloat<N> folded = (fmax_lanes<N>(0.0f, dot(shading, wi)) + fmax_lanes<N>(0.0f, dot(shading, image))) * kInvPi;
             pdf = simd::select(smooth, folded, pdf);
         }

@@ -44,6 +44,20 @@ inline Lanes3<N> negate(const Lanes3<N>& a) {
     return {-a.x, -a.y, -a.z};
 }
 
+// glm::normalize: v times 1 / sqrt(dot(v, v)).
+template <int N>
+inline Lanes3<N> normalized(const Lanes3<N>& v) {
+    const vfloat<N> inverse_length = 1.0f / simd::sqrt(dot(v, v));
+    return {v.x * inverse_length, v.y * inverse_length, v.z * inverse_length};
+}
+
+// reflect(d, n) (core/materials/fresnel.h): d - (2 dot(d, n)) n.
+template <int N>
+inline Lanes3<N> reflect(const Lanes3<N>& d, const Lanes3<N>& n) {
+    const vfloat<N> twice = 2.0f * dot(d, n);
+    return {d.x - twice * n.x, d.y - twice * n.y, d.z - twice * n.z};
+}
+
 // fmax_float / fmin_float (core/base/float_minmax.h): x when y is NaN, else maxss / minss.
 template <int N>
 inline vfloat<N> fmax_lanes(vfloat<N> x, vfloat<N> y) {

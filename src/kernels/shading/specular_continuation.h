@@ -21,20 +21,6 @@
 namespace wt::shading {
 inline namespace WT_SIMD_ISA {
 
-// glm::normalize: v times 1 / sqrt(dot(v, v)).
-template <int N>
-inline Lanes3<N> normalized(const Lanes3<N>& v) {
-    const vfloat<N> inverse_length = 1.0f / simd::sqrt(dot(v, v));
-    return {v.x * inverse_length, v.y * inverse_length, v.z * inverse_length};
-}
-
-// reflect(d, n) (core/materials/fresnel.h): d - (2 dot(d, n)) n.
-template <int N>
-inline Lanes3<N> reflect(const Lanes3<N>& d, const Lanes3<N>& n) {
-    const vfloat<N> twice = 2.0f * dot(d, n);
-    return {d.x - twice * n.x, d.y - twice * n.y, d.z - twice * n.z};
-}
-
 // Appends the next ray of every entry of `q` whose path goes on, in the queue's order.
 // `roulette`: Russian roulette at this vertex (vertex > rr_start_bounce).
 template <int N>
