@@ -177,7 +177,7 @@ LightVertex LightPathTracer::at_vertex(uint64_t key, uint32_t vertex, const Ligh
 bool LightPathTracer::queue_specular(uint64_t key, uint32_t vertex, const LightRay& at, const SurfacePoint& surface,
                                      uint32_t slot, SpecularVertexQueue& q) const {
     const Material& m = scene_.materials[surface.material];
-    if (!(m.type == MaterialType::mirror || m.type == MaterialType::glass) || m.has_textures() || surface.smooth) return false;
+    if (!continues_as_specular(m, surface)) return false;
     if (int(vertex) + 1 >= scene_.settings.max_bounces) return false;  // at_vertex ends the path: nothing to queue
     static_assert(light_dim::roulette == light_dim::specular_choice + 1 && light_dim::specular_choice % 2 == 0,
                   "the choice and roulette are one pair");

@@ -145,7 +145,7 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, con
                 const SurfacePoint surface = ws.surfaces.at(in_chunk);
                 // Flat mirrors and glass go to the shade kernels' queue, continued by the chunk.
                 if (tracer_.queue_specular(ws.key[slot], vertex, at, surface, slot, ws.specular)) {
-                    if (ws.specular.count == LightPathWorkspace::kChunk) continue_specular();
+                    if (ws.specular.full()) continue_specular();
                     continue;
                 }
                 v = tracer_.at_vertex(ws.key[slot], vertex, at, hit, surface, textured);

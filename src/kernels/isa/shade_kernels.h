@@ -38,8 +38,8 @@ struct ShadeKernels {
     // The first rays of light paths from their points on area lights, in the queue's order, those
     // above the light appended to `rays` (kernels/shading/area_light_rays.h).
     void (*aim_area_light_rays)(const LightPointQueue&, ShadowQueue& rays);
-    // The light paths' flat mirror and glass vertices of one bounce, the paths that go on
-    // appended to `next` in the queue's order; `roulette` at this bounce
+    // The flat mirror and glass vertices of one bounce of light or camera paths, the paths that
+    // go on appended to `next` in the queue's order; `roulette` at this bounce
     // (kernels/shading/specular_continuation.h).
     void (*continue_specular)(const SpecularVertexQueue&, bool roulette, FresnelModel fresnel, RayQueue& next);
 };

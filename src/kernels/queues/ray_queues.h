@@ -13,6 +13,7 @@
 #include "core/path/path_vertex.h"
 #include "core/base/ray.h"
 #include "kernels/queues/diffuse_vertex_queue.h"
+#include "kernels/queues/specular_vertex_queue.h"
 #include "kernels/queues/surface_chunk.h"
 
 namespace wt {
@@ -126,10 +127,13 @@ struct ShadowQueue {
 };
 
 // What the shade stage's kernels (kernels/shading) read and write besides the queues: a chunk
-// of surface points and a chunk of diffuse vertices (kernels/wavefront/shade_queue.h).
+// of surface points, one of diffuse vertices and one of mirror and glass vertices
+// (kernels/wavefront/shade_queue.h).
 struct ShadeChunks {
+    static constexpr std::size_t kSpecularChunk = 256;
     SurfaceChunk surfaces;
     DiffuseVertexQueue diffuse;
+    SpecularVertexQueue specular;
 };
 
 // Everything one worker needs to run a batch; allocated once per worker.
@@ -147,7 +151,8 @@ struct WavefrontWorkspace {
                                               bool with_normals = false) {
         const std::size_t path_table = 32 + (with_aovs ? sizeof(FirstSurface) : 0) + (with_normals ? 12 : 0);
         return batch_paths * (path_table + 2 * 45 + 16) + batch_paths * shadow_rays_per_hit * 45 +
-               DiffuseVertexQueue::bytes_needed(shadow_rays_per_hit) + SurfaceChunk::kBytes;
+               DiffuseVertexQueue::bytes_needed(shadow_rays_per_hit) + SurfaceChunk::kBytes +
+               padded_entries(ShadeChunks::kSpecularChunk) * SpecularVertexQueue::kBytesPerEntry;
     }
 
     // `with_normals`: the scene has an emitter selection (PathTable::nx).
@@ -158,6 +163,7 @@ struct WavefrontWorkspace {
         hits.reserve(batch_paths);
         shadows.reserve(batch_paths * shadow_rays_per_hit);
         shade.diffuse.reserve(DiffuseVertexQueue::chunk_for(shadow_rays_per_hit), shadow_rays_per_hit);
+        shade.specular.reserve(ShadeChunks::kSpecularChunk);
     }
 };
 

@@ -4,7 +4,8 @@
 // (core/materials/bsdf.h: the mirror direction; for glass, Snell's refraction, the reflectance
 // by Schlick's approximation or the exact Fresnel equations, and the choice between the two),
 // the weight, Russian roulette and the offset origin, over a SpecularVertexQueue, appending the
-// paths that go on to a RayQueue. One generic loop, instantiated per ISA at its widest vector
+// paths that go on to a RayQueue: for light paths, and for camera paths what continue_path
+// (core/path/path_vertex.h) does at such a vertex, the same computation. One generic loop, instantiated per ISA at its widest vector
 // (kernels/isa/shade_<isa>.cpp) and at width 1 for the scalar kernels.
 //
 // Bit for bit what the scalar code computes, lane by lane (the same operations in the same
@@ -81,8 +82,10 @@ void continue_specular_vertices(const SpecularVertexQueue& q, bool roulette, Fre
         for (int k = 0; k < 9; ++k) vfloat<N>::store(out[k], lanes[k]);
         for (uint32_t pushed = lanes_below(alive, q.count - i); pushed != 0; pushed &= pushed - 1) {
             const int lane = __builtin_ctz(pushed);
+            // A specular bounce's pdf is 0 (continue_path), read only with mis or kRoughPdf.
+            next.bsdf_pdf[next.count] = 0.0f;
             next.push({{out[0][lane], out[1][lane], out[2][lane]}, {out[3][lane], out[4][lane], out[5][lane]}},
-                      {out[6][lane], out[7][lane], out[8][lane]}, q.path[i + lane], 0);
+                      {out[6][lane], out[7][lane], out[8][lane]}, q.path[i + lane], q.next_flags[i + lane]);
         }
     }
 }

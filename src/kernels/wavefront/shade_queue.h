@@ -17,6 +17,7 @@
 #include "kernels/queues/ray_queues.h"
 #include "kernels/photons/photon_gather.h"
 #include "kernels/photons/photon_maps.h"
+#include "kernels/wavefront/camera_specular_vertex.h"
 #include "kernels/wavefront/stages.h"
 
 namespace wt {
@@ -36,7 +37,8 @@ namespace wt {
 // diffuse vertices' light samples and continuations (flat, or folded about a shading normal),
 // for which the loop draws the random
 // numbers, picks the light points and queues them in `chunks.diffuse`, and the kernels append
-// shadow rays and next rays, a chunk at a time, among the other vertices'. Every path's terms
+// shadow rays and next rays, a chunk at a time, among the other vertices'; the flat mirror and
+// glass vertices' continuations the same way, through `chunks.specular`. Every path's terms
 // are still added in the same order (its emission and photons here, its light samples in index
 // order by the shadow stage), and each path's random numbers depend on the path alone, so the
 // order of the queues changes no bit of the image. Not with a lights list, whose samplers and
@@ -54,9 +56,11 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
     const bool surface_kernel = vector_kernels && surface_kernel_covers(scene);
     SurfaceChunk& surfaces = chunks.surfaces;
     DiffuseVertexQueue& diffuse = chunks.diffuse;
+    SpecularVertexQueue& specular = chunks.specular;
     next_rays.count = 0;
     shadows.count = 0;
     diffuse.clear();
+    specular.count = 0;
     [[maybe_unused]] const auto shade_diffuse_chunk = [&] {
         if (has_lights) {
             const DiffuseLightSampling sampling{shadow_ray_count, E::mis && path_continues,
@@ -69,6 +73,11 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
             kernels.continue_diffuse(diffuse, continuation, next_rays);
         }
         diffuse.clear();
+    };
+    [[maybe_unused]] const auto shade_specular_chunk = [&] {
+        kernels.continue_specular(specular, int(bounce) >= scene.settings.rr_start_bounce, scene.settings.accuracy.fresnel,
+                                  next_rays);
+        specular.count = 0;
     };
     [[maybe_unused]] std::optional<Material> textured;  // kRough: the hit's material with its textures looked up
     for (std::size_t i = 0; i < rays.count; ++i) {
@@ -131,6 +140,12 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
                 if (diffuse.full()) shade_diffuse_chunk();
                 continue;
             }
+            if (vector_kernels && continues_as_specular(m, surface)) {  // the specular kernel's vertex
+                if (!path_continues) continue;
+                queue_camera_specular_vertex<E>(scene, m, surface, ray.direction, throughput, path, bounce, elsewhere, slot, specular);
+                if (specular.full()) shade_specular_chunk();
+                continue;
+            }
         }
         if constexpr (kListedLights) {
             sample_listed_lights<E>(scene, m, surface, ray.direction, throughput, path, bounce,
@@ -152,7 +167,10 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
             }
         }
     }
-    if constexpr (!kListedLights) shade_diffuse_chunk();
+    if constexpr (!kListedLights) {
+        shade_diffuse_chunk();
+        if (specular.count > 0) shade_specular_chunk();
+    }
 }
 
 
