@@ -1,16 +1,16 @@
 #pragma once
-// The continuation of light paths at flat mirror and glass vertices, N at a time: what
-// LightPathTracer::at_vertex (kernels/caustics/light_path.cpp) does there, sample_specular
-// (core/materials/bsdf.h: the mirror direction; for glass, Snell's refraction, the reflectance
-// by Schlick's approximation or the exact Fresnel equations, and the choice between the two),
-// the weight, Russian roulette and the offset origin, over a SpecularVertexQueue, appending the
-// paths that go on to a RayQueue: for light paths, and for camera paths what continue_path
-// (core/path/path_vertex.h) does at such a vertex, the same computation. One generic loop, instantiated per ISA at its widest vector
+// The continuation at flat mirror and glass vertices, N at a time, of light paths (what
+// LightPathTracer::at_vertex, kernels/caustics/light_path.cpp, does there) and of camera paths
+// (what continue_path, core/path/path_vertex.h, does): sample_specular (core/materials/bsdf.h:
+// the mirror direction; for glass, Snell's refraction, the reflectance by Schlick's
+// approximation or the exact Fresnel equations, and the choice between the two), the weight,
+// Russian roulette and the offset origin, over a SpecularVertexQueue, appending the paths that
+// go on to a RayQueue. One generic loop, instantiated per ISA at its widest vector
 // (kernels/isa/shade_<isa>.cpp) and at width 1 for the scalar kernels.
 //
 // Bit for bit what the scalar code computes, lane by lane (the same operations in the same
 // order, branches as selects): tests/specular_continuation_test.cpp holds every ISA's rays to
-// at_vertex's.
+// at_vertex's and continue_path's.
 
 #include <cstdint>
 
