@@ -51,7 +51,7 @@ std::vector<Block> analytic_blocks(const SceneDescription& d) {
     const int n = 8;  // n x n points per pixel for the analytic mean
     for (int by = 0; by < d.settings.height; by += kBlock)
         for (int bx = 0; bx < d.settings.width; bx += kBlock) {
-            Block b{bx, by};
+            Block b{bx, by, 0.0, {}};
             bool usable = true;
             for (int y = by; y < by + kBlock && usable; ++y)
                 for (int x = bx; x < bx + kBlock && usable; ++x)

@@ -148,7 +148,7 @@ void expect_photon_flux(Kind kind) {
     double sum = 0.0, sum2 = 0.0;
     RayCounts counts;
     std::vector<CameraSplat> splats;
-    std::vector<Photon> photons;
+    PhotonList photons;
     for (uint64_t i = 0; i < n; ++i) {
         photons.clear();
         tracer.trace(i, 0, counts, splats, nullptr, &photons);

@@ -37,7 +37,7 @@ std::vector<Block> analytic_blocks(const SceneDescription& d, double mean_radius
     std::vector<Block> blocks;
     for (int by = 0; by < d.settings.height; by += kBlock)
         for (int bx = 0; bx < d.settings.width; bx += kBlock) {
-            Block b{bx, by};
+            Block b{bx, by, 0.0, 0.0, {}};
             bool usable = true;
             for (int j = 0; j < kBlock * kBlock * kSub * kSub && usable; ++j) {
                 const int pixel = j / (kSub * kSub), sub = j % (kSub * kSub);

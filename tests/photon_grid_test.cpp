@@ -19,10 +19,10 @@ namespace wt {
 namespace {
 
 // Photons in clusters about a few centres, and on a plane (z = 0) so that gathers see many.
-std::vector<Photon> random_photons(std::size_t n, float scale, uint32_t seed) {
+PhotonList random_photons(std::size_t n, float scale, uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    std::vector<Photon> photons;
+    PhotonList photons;
     for (std::size_t i = 0; i < n; ++i) {
         const float spread = i % 3 == 0 ? 0.05f : 1.0f;
         const glm::vec3 centre = i % 3 == 0 ? glm::vec3(0.3f, -0.2f, 0.0f) : glm::vec3(0.0f);
@@ -34,9 +34,9 @@ std::vector<Photon> random_photons(std::size_t n, float scale, uint32_t seed) {
 }
 
 // Every photon within the radius, by index: the grid's (sorted) against a loop over all.
-void expect_grid_matches_brute_force(const std::vector<Photon>& photons, float radius, float scale, uint32_t seed) {
-    const std::vector<Photon> second(photons.begin() + photons.size() / 2, photons.end());
-    const std::vector<Photon> first(photons.begin(), photons.begin() + photons.size() / 2);
+void expect_grid_matches_brute_force(const PhotonList& photons, float radius, float scale, uint32_t seed) {
+    const PhotonList second(photons.begin() + photons.size() / 2, photons.end());
+    const PhotonList first(photons.begin(), photons.begin() + photons.size() / 2);
     const PhotonGrid grid({&first, &second}, radius);  // two parts: indices run on across them
     ASSERT_EQ(grid.size(), photons.size());
     Material floor;
@@ -94,7 +94,7 @@ TEST(PhotonGrid, FindsPhotonsAtTheRadiusWhereverTheCellBoundariesFall) {
     std::mt19937 rng(9);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::vector<glm::vec3> centres;
-    std::vector<Photon> photons;
+    PhotonList photons;
     for (int i = 0; i < 4000; ++i) {
         // On a lattice 10 r apart, jittered: no point sees another's photons.
         const glm::vec3 c = glm::vec3(float(i % 20), float(i / 20 % 20), float(i / 400)) * (10.0f * r) +
@@ -115,11 +115,44 @@ TEST(PhotonGrid, FindsPhotonsAtTheRadiusWhereverTheCellBoundariesFall) {
     }
 }
 
+// A render rebuilds one grid per sample in the same memory (PhotonMaps): after holding more
+// photons at another radius, or fewer, a rebuilt grid finds exactly what a fresh one finds, in
+// the same order, with nothing of the grid before.
+TEST(PhotonGrid, RebuiltInPlaceFindsWhatAFreshGridFinds) {
+    PhotonGrid reused;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    struct Build {
+        std::size_t photons;
+        float radius;
+    };
+    for (const Build b : {Build{5000, 0.05f}, Build{700, 0.02f}, Build{9000, 0.03f}, Build{0, 0.1f}, Build{3000, 0.2f}}) {
+        const PhotonList photons = random_photons(b.photons, 1.0f, uint32_t(b.photons));
+        reused.build({&photons}, b.radius);
+        const PhotonGrid fresh({&photons}, b.radius);
+        ASSERT_EQ(reused.size(), b.photons);
+        ASSERT_EQ(reused.radius(), b.radius);
+        std::size_t found = 0;
+        for (int q = 0; q < 200; ++q) {
+            const glm::vec3 x = q % 2 == 0 && b.photons > 0 ? photons[std::size_t(q) * 7 % b.photons].position
+                                                            : glm::vec3(u(rng), u(rng), 0.0f);
+            std::vector<std::pair<uint32_t, float>> from_reused, from_fresh;
+            reused.for_each_within(x, [&](const Photon& p, uint32_t i) { from_reused.emplace_back(i, p.power.x); });
+            fresh.for_each_within(x, [&](const Photon& p, uint32_t i) { from_fresh.emplace_back(i, p.power.x); });
+            ASSERT_EQ(from_reused, from_fresh) << b.photons << " photons, query " << q;
+            for (const auto& [i, power] : from_fresh) ASSERT_EQ(power, photons[i].power.x);
+            found += from_fresh.size();
+        }
+        if (b.photons > 0) EXPECT_GT(found, 100u) << b.photons << " photons: the queries must find photons";
+        else EXPECT_EQ(found, 0u);
+    }
+}
+
 TEST(PhotonGrid, GatherCountsOnlyPhotonsFromTheViewedSideWithinTheVertexLimit) {
     Material floor;
     floor.albedo = glm::vec3(0.5f);
     const glm::vec3 down(0, 0, -1);
-    std::vector<Photon> photons = {
+    PhotonList photons = {
         {{0, 0, 0}, down, {0, 0, 1}, glm::vec3(1.0f), 2},              // counted
         {{0.1f, 0, 0}, -down, {0, 0, -1}, glm::vec3(1.0f), 2},         // arrived from below
         {{0, 0.1f, 0}, down, {0, 0, 1}, glm::vec3(1.0f), 4},           // too many vertices for the limit 3

@@ -46,7 +46,7 @@ const std::string kValidScene = R"({
 
 // The valid scene, edited as text: for what a JSON value cannot express (syntax errors,
 // overflowing literals, repeated keys, 2.0 versus 2).
-std::string replaced(const std::string& from, const std::string& to) {
+[[maybe_unused]] std::string replaced(const std::string& from, const std::string& to) {
     std::string text = kValidScene;
     const std::size_t at = text.find(from);
     if (at == std::string::npos) {

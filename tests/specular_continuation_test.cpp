@@ -218,7 +218,9 @@ void check_camera_vertices(const Scene& scene, uint32_t bounce, const std::strin
             one.reserve(1);
             one.push<E::mis>(want, 0);
             ASSERT_EQ(int(next.count_emission[k]), int(one.count_emission[0])) << name << ": the next ray's flags";
-            if (E::mis) ASSERT_TRUE(same_bits(next.bsdf_pdf[k], one.bsdf_pdf[0])) << name << ": the next ray's pdf";
+            if (E::mis) {
+                ASSERT_TRUE(same_bits(next.bsdf_pdf[k], one.bsdf_pdf[0])) << name << ": the next ray's pdf";
+            }
         }
     }
     EXPECT_GT(continued, 1000u) << where;

@@ -188,7 +188,7 @@ bool LightPathTracer::queue_specular(uint64_t key, uint32_t vertex, const LightR
 }
 
 void LightPathTracer::trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats,
-                            std::vector<LightPathVertexRecord>* record, std::vector<Photon>* photons) const {
+                            std::vector<LightPathVertexRecord>* record, PhotonList* photons) const {
     const uint64_t key = light_path_key(scene_.settings.seed, index, sample);
     std::optional<LightRay> ray = starts_at_area_lights_only_ ? start(key) : start_at_listed_lights(key);
     ++counts.light_paths;

@@ -135,7 +135,7 @@ public:
     // `record`, if given, receives every vertex; `photons`, if given, the path's photons in
     // vertex order (a tracer that records them).
     void trace(uint64_t index, uint32_t sample, RayCounts& counts, std::vector<CameraSplat>& splats,
-               std::vector<LightPathVertexRecord>* record = nullptr, std::vector<Photon>* photons = nullptr) const;
+               std::vector<LightPathVertexRecord>* record = nullptr, PhotonList* photons = nullptr) const;
 
 private:
     // `random`: the vertex's numbers, for the point on a thin lens and the pixel under a wide filter.

@@ -72,7 +72,7 @@ void LightTracingPass::flush(Film& film, std::vector<CameraSplat>& buffer, RayCo
 // in the same order per path as LightPathTracer::trace, so the same splats.
 void LightTracingPass::trace_item_wavefront(const IntersectContext& context, const ShadeKernels& shade, uint32_t sample,
                                             uint64_t first, uint64_t end, LightPathWorkspace& ws,
-                                            std::vector<CameraSplat>& splats, std::vector<Photon>* photons,
+                                            std::vector<CameraSplat>& splats, PhotonList* photons,
                                             RayCounts& counts) const {
     ws.rays.count = 0;
     ws.photons.clear();
@@ -198,7 +198,7 @@ void LightTracingPass::render(Film& film, uint32_t sample_begin, uint32_t sample
         const uint64_t end = std::min(paths_per_sample_, first + kPathsPerItem);
         RayCounts& c = counts[std::size_t(worker)];
         std::vector<CameraSplat>& buffer = buffers_[std::size_t(worker)];
-        std::vector<Photon>* item_photons = photons ? &photons->photons(item) : nullptr;
+        PhotonList* item_photons = photons ? &photons->photons(item) : nullptr;
         if (wavefront) {
             auto& ws = workspaces_[std::size_t(worker)];
             if (!ws) ws = std::make_unique<LightPathWorkspace>(std::size_t(kPathsPerItem));

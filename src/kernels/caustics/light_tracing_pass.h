@@ -50,7 +50,7 @@ public:
 
 private:
     void trace_item_wavefront(const IntersectContext& context, const ShadeKernels& shade, uint32_t sample, uint64_t first,
-                              uint64_t end, LightPathWorkspace& ws, std::vector<CameraSplat>& splats, std::vector<Photon>* photons,
+                              uint64_t end, LightPathWorkspace& ws, std::vector<CameraSplat>& splats, PhotonList* photons,
                               RayCounts& counts) const;
     void flush(Film& film, std::vector<CameraSplat>& buffer, RayCounts& counts);
 

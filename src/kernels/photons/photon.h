@@ -7,6 +7,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/base/aligned_vector.h"
+
 namespace wt {
 
 struct Photon {
@@ -18,5 +20,10 @@ struct Photon {
     glm::vec3 power;
     uint32_t vertex;  // the surfaces the light path had hit, this one included (2 or more)
 };
+
+// A list of photons. Every photon is written before it is read (a light path's are placed by a
+// sort, a grid's by its counting sort), so growing a list leaves the new photons unwritten
+// rather than zeroing megabytes a sample only to overwrite them.
+using PhotonList = UninitialisedVector<Photon>;
 
 }  // namespace wt

@@ -8,31 +8,36 @@
 
 namespace wt {
 
-PhotonGrid::PhotonGrid(const std::vector<const std::vector<Photon>*>& parts, float radius)
-    : radius_(radius), radius_squared_(radius * radius), inverse_cell_(1.0 / (2.0 * double(radius) * kCellMargin)) {
-    if (!(radius > 0.0f && std::isfinite(radius_squared_)))
+void PhotonGrid::build(const std::vector<const PhotonList*>& parts, float radius) {
+    if (!(radius > 0.0f && std::isfinite(radius * radius)))
         throw std::invalid_argument("PhotonGrid: the radius must be positive and its square finite");
+    radius_ = radius, radius_squared_ = radius * radius, inverse_cell_ = 1.0 / (2.0 * double(radius) * kCellMargin);
     std::size_t n = 0;
     for (const auto* part : parts) n += part->size();
     if (n > UINT32_MAX) throw std::length_error("PhotonGrid: more than 2^32 - 1 photons in one sample");
     uint64_t buckets = 1;
     while (buckets < n) buckets *= 2;
     mask_ = buckets - 1;
+    // Sized from empty: a vector that must grow then moves nothing.
+    const auto resize_unwritten = [](auto& v, std::size_t size) {
+        if (v.capacity() < size) v.clear();
+        v.resize(size);
+    };
     // Counting sort: each photon's bucket, the buckets' sizes, their starts, then every photon
     // in input order to the next place in its bucket.
-    std::vector<uint32_t> bucket(n);
+    resize_unwritten(bucket_, n);
     start_.assign(std::size_t(buckets) + 1, 0);
     std::size_t i = 0;
     for (const auto* part : parts)
-        for (const Photon& p : *part) ++start_[(bucket[i++] = uint32_t(bucket_of(p.position))) + 1];
+        for (const Photon& p : *part) ++start_[(bucket_[i++] = uint32_t(bucket_of(p.position))) + 1];
     for (std::size_t b = 0; b < buckets; ++b) start_[b + 1] += start_[b];
-    std::vector<uint32_t> next(start_.begin(), start_.end() - 1);
-    photons_.resize(n);
-    index_.resize(n);
+    next_.assign(start_.begin(), start_.end() - 1);
+    resize_unwritten(photons_, n);
+    resize_unwritten(index_, n);
     i = 0;
     for (const auto* part : parts)
         for (const Photon& p : *part) {
-            const uint32_t at = next[bucket[i]]++;
+            const uint32_t at = next_[bucket_[i]]++;
             photons_[at] = p;
             index_[at] = uint32_t(i++);
         }

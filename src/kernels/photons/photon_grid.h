@@ -10,6 +10,10 @@
 // order they were given (light path key order), and the grid is the same bits however the light
 // paths were scheduled. Cells are a little over twice the radius wide, so a lookup's sphere
 // overlaps at most two cells per axis: eight buckets.
+//
+// A render builds one grid per sample, of megabytes each, while the other threads wait for it:
+// build() reuses the grid's arrays, so a sample's build neither faults in fresh pages nor zeroes
+// memory it then overwrites.
 
 #include <cstddef>
 #include <cstdint>
@@ -25,7 +29,9 @@ class PhotonGrid {
 public:
     PhotonGrid() = default;
     // The photons of `parts`, concatenated in order; `radius` finite and positive.
-    PhotonGrid(const std::vector<const std::vector<Photon>*>& parts, float radius);
+    PhotonGrid(const std::vector<const PhotonList*>& parts, float radius) { build(parts, radius); }
+    // The same grid, in this grid's memory (what it held before is gone).
+    void build(const std::vector<const PhotonList*>& parts, float radius);
 
     float radius() const { return radius_; }
     std::size_t size() const { return photons_.size(); }
@@ -69,9 +75,11 @@ private:
     float radius_ = 0.0f, radius_squared_ = 0.0f;
     double inverse_cell_ = 0.0;
     uint64_t mask_ = 0;                // buckets - 1 (a power of two)
-    std::vector<Photon> photons_;      // by bucket, each bucket's in input order
-    std::vector<uint32_t> index_;      // each one's place in the input
-    std::vector<uint32_t> start_;      // bucket b's photons are [start_[b], start_[b + 1])
+    PhotonList photons_;                    // by bucket, each bucket's in input order
+    UninitialisedVector<uint32_t> index_;   // each one's place in the input
+    std::vector<uint32_t> start_;           // bucket b's photons are [start_[b], start_[b + 1])
+    UninitialisedVector<uint32_t> bucket_;  // the build's: each input photon's bucket
+    UninitialisedVector<uint32_t> next_;    // the build's: each bucket's next free place
 };
 
 }  // namespace wt

@@ -9,7 +9,6 @@ namespace wt {
 struct PhotonMaps::Slot {
     float radius = 0.0f;
     std::once_flag built;
-    PhotonGrid grid;
 };
 
 PhotonMaps::PhotonMaps(const Scene& scene)
@@ -28,6 +27,7 @@ void PhotonMaps::start_batch(uint32_t begin, uint32_t end, uint64_t items_per_sa
     if (items_.size() < items) items_.resize(items);
     for (std::size_t i = 0; i < items; ++i) items_[i].clear();
     slots_.clear();
+    if (grids_.size() < end - begin) grids_.resize(end - begin);
     for (uint32_t s = begin; s < end; ++s) {
         auto slot = std::make_unique<Slot>();
         slot->radius = float(std::sqrt(schedule_.squared(s)));
@@ -42,20 +42,22 @@ void PhotonMaps::end_batch() {
 
 void PhotonMaps::release() {
     end_batch();
-    std::vector<std::vector<Photon>>().swap(items_);
+    std::vector<PhotonList>().swap(items_);
+    std::vector<PhotonGrid>().swap(grids_);
 }
 
 const PhotonGrid& PhotonMaps::map(uint32_t sample) const {
     if (!has_sample(sample)) throw std::logic_error("PhotonMaps: a sample outside the batch");
     Slot& slot = *slots_[sample - begin_];
+    PhotonGrid& grid = grids_[sample - begin_];
     std::call_once(slot.built, [&] {
-        std::vector<const std::vector<Photon>*> parts;
+        std::vector<const PhotonList*> parts;
         const std::size_t first = std::size_t(items_per_sample_) * (sample - begin_);
         for (std::size_t i = first; i < first + items_per_sample_; ++i) parts.push_back(&items_[i]);
-        slot.grid = PhotonGrid(parts, slot.radius);
+        grid.build(parts, slot.radius);
         maps_built_.fetch_add(1, std::memory_order_relaxed);
     });
-    return slot.grid;
+    return grid;
 }
 
 }  // namespace wt

@@ -34,13 +34,13 @@ public:
 
     // Empties the maps and makes room for samples [begin, end), `items_per_sample` photon lists each.
     void start_batch(uint32_t begin, uint32_t end, uint64_t items_per_sample);
-    // Drops the batch's grids; its photon lists keep their memory for the next batch.
+    // Ends the batch; its photon lists and grids keep their memory for the next batch's.
     void end_batch();
     // Frees everything (at the end of a range of samples).
     void release();
 
     // The photon list of the batch's work item `item` (sample begin + item / items_per_sample).
-    std::vector<Photon>& photons(std::size_t item) { return items_[item]; }
+    PhotonList& photons(std::size_t item) { return items_[item]; }
 
     // Sample `sample`'s map (which must be in the batch), built on first use; thread-safe.
     const PhotonGrid& map(uint32_t sample) const;
@@ -54,8 +54,11 @@ private:
     PhotonRadiusSchedule schedule_;
     uint32_t begin_ = 0, end_ = 0;
     uint64_t items_per_sample_ = 0;
-    std::vector<std::vector<Photon>> items_;
+    std::vector<PhotonList> items_;
     std::vector<std::unique_ptr<Slot>> slots_;  // one per sample of the batch
+    // Sample begin_ + i's grid is grids_[i], rebuilt in place each batch (photon_grid.h); written
+    // only under its slot's once_flag.
+    mutable std::vector<PhotonGrid> grids_;
     mutable std::atomic<uint64_t> maps_built_{0};
 };
 
