@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/system/thread_pool.h"
 #include "kernels/photons/photon_gather.h"
 #include "kernels/photons/photon_grid.h"
 #include "kernels/photons/photon_radius.h"
@@ -115,13 +116,41 @@ TEST(PhotonGrid, FindsPhotonsAtTheRadiusWhereverTheCellBoundariesFall) {
     }
 }
 
+// What a lookup at x visits, in the grid's order: (index, power.x) per photon.
+std::vector<std::pair<uint32_t, float>> lookup(const PhotonGrid& grid, const glm::vec3& x) {
+    std::vector<std::pair<uint32_t, float>> visited;
+    grid.for_each_within(x, [&](const Photon& p, uint32_t i) { visited.emplace_back(i, p.power.x); });
+    return visited;
+}
+
+// `grid` against a fresh single-threaded build of the same photons: the same photons in the same
+// order at 200 points (half of them on photons). Returns how many photons the lookups found.
+std::size_t expect_same_lookups_as_a_fresh_grid(const PhotonGrid& grid, const std::vector<const PhotonList*>& parts,
+                                                float radius, uint32_t seed) {
+    const PhotonGrid fresh(parts, radius);
+    EXPECT_EQ(grid.size(), fresh.size());
+    EXPECT_EQ(grid.radius(), radius);
+    PhotonList all;
+    for (const auto* part : parts) all.insert(all.end(), part->begin(), part->end());
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::size_t found = 0;
+    for (int q = 0; q < 200; ++q) {
+        const glm::vec3 x =
+            q % 2 == 0 && !all.empty() ? all[std::size_t(q) * 7 % all.size()].position : glm::vec3(u(rng), u(rng), 0.0f);
+        const auto expected = lookup(fresh, x);
+        EXPECT_EQ(lookup(grid, x), expected) << all.size() << " photons, query " << q;
+        for (const auto& [i, power] : expected) EXPECT_EQ(power, all[i].power.x);
+        found += expected.size();
+    }
+    return found;
+}
+
 // A render rebuilds one grid per sample in the same memory (PhotonMaps): after holding more
 // photons at another radius, or fewer, a rebuilt grid finds exactly what a fresh one finds, in
 // the same order, with nothing of the grid before.
 TEST(PhotonGrid, RebuiltInPlaceFindsWhatAFreshGridFinds) {
     PhotonGrid reused;
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     struct Build {
         std::size_t photons;
         float radius;
@@ -129,22 +158,32 @@ TEST(PhotonGrid, RebuiltInPlaceFindsWhatAFreshGridFinds) {
     for (const Build b : {Build{5000, 0.05f}, Build{700, 0.02f}, Build{9000, 0.03f}, Build{0, 0.1f}, Build{3000, 0.2f}}) {
         const PhotonList photons = random_photons(b.photons, 1.0f, uint32_t(b.photons));
         reused.build({&photons}, b.radius);
-        const PhotonGrid fresh({&photons}, b.radius);
-        ASSERT_EQ(reused.size(), b.photons);
-        ASSERT_EQ(reused.radius(), b.radius);
-        std::size_t found = 0;
-        for (int q = 0; q < 200; ++q) {
-            const glm::vec3 x = q % 2 == 0 && b.photons > 0 ? photons[std::size_t(q) * 7 % b.photons].position
-                                                            : glm::vec3(u(rng), u(rng), 0.0f);
-            std::vector<std::pair<uint32_t, float>> from_reused, from_fresh;
-            reused.for_each_within(x, [&](const Photon& p, uint32_t i) { from_reused.emplace_back(i, p.power.x); });
-            fresh.for_each_within(x, [&](const Photon& p, uint32_t i) { from_fresh.emplace_back(i, p.power.x); });
-            ASSERT_EQ(from_reused, from_fresh) << b.photons << " photons, query " << q;
-            for (const auto& [i, power] : from_fresh) ASSERT_EQ(power, photons[i].power.x);
-            found += from_fresh.size();
-        }
+        const std::size_t found = expect_same_lookups_as_a_fresh_grid(reused, {&photons}, b.radius, 11);
         if (b.photons > 0) EXPECT_GT(found, 100u) << b.photons << " photons: the queries must find photons";
         else EXPECT_EQ(found, 0u);
+    }
+}
+
+// Built by a pool's threads (the buckets split in one range per thread, each bucket's photons in
+// input order): the same grid as one thread's, for any thread count, from many parts or one,
+// also rebuilt in place, and with fewer buckets than threads.
+TEST(PhotonGrid, BuiltWithThreadsIsTheGridOneThreadBuilds) {
+    const PhotonList photons = random_photons(20000, 1.0f, 21);
+    std::vector<PhotonList> lists;
+    for (std::size_t begin = 0; begin < photons.size(); begin += 1500)
+        lists.emplace_back(photons.begin() + begin, photons.begin() + std::min(photons.size(), begin + 1500));
+    std::vector<const PhotonList*> many;
+    for (const PhotonList& l : lists) many.push_back(&l);
+    const PhotonList few(photons.begin(), photons.begin() + 3);
+    for (const int threads : {2, 3, 5}) {
+        ThreadPool pool(threads);
+        PhotonGrid grid;
+        grid.build(many, 0.03f, &pool);
+        EXPECT_GT(expect_same_lookups_as_a_fresh_grid(grid, many, 0.03f, 12), 100u) << threads << " threads";
+        grid.build({&photons}, 0.05f, &pool);
+        EXPECT_GT(expect_same_lookups_as_a_fresh_grid(grid, {&photons}, 0.05f, 13), 100u) << threads << " threads";
+        grid.build({&few}, 0.5f, &pool);  // 4 buckets
+        EXPECT_GE(expect_same_lookups_as_a_fresh_grid(grid, {&few}, 0.5f, 14), 100u) << threads << " threads";
     }
 }
 

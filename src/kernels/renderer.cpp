@@ -114,6 +114,7 @@ void RenderSession::render_camera_paths(Film& film, SampleRange range, const std
     for (uint32_t begin = range.begin; begin < range.end;) {
         const SampleRange batch{begin, begin + std::min(step, range.end - begin)};
         trace_light_paths(film, batch, photons_.get());
+        photons_->build_if_asked_before(pool_);
         render_tiles(film, batch, tile_done, adaptive);
         photons_->end_batch();
         begin = batch.end;

@@ -6,14 +6,13 @@
 // grid and each photon looks them up; here the photons are, and each camera vertex looks them
 // up, which lets a sample's camera paths be shaded in any order once its photons are in.
 //
-// Built without threads, by a counting sort on the bucket: the photons of a bucket stay in the
-// order they were given (light path key order), and the grid is the same bits however the light
-// paths were scheduled. Cells are a little over twice the radius wide, so a lookup's sphere
-// overlaps at most two cells per axis: eight buckets.
+// Built by a counting sort on the bucket: the photons of a bucket stay in the order they were
+// given (light path key order), so the grid is the same bits however the light paths were
+// scheduled and however many threads build it. Cells are a little over twice the radius wide, so
+// a lookup's sphere overlaps at most two cells per axis: eight buckets.
 //
-// A render builds one grid per sample, of megabytes each, while the other threads wait for it:
-// build() reuses the grid's arrays, so a sample's build neither faults in fresh pages nor zeroes
-// memory it then overwrites.
+// A render builds one grid per sample, of megabytes each: build() reuses the grid's arrays, so a
+// sample's build neither faults in fresh pages nor zeroes memory it then overwrites.
 
 #include <cstddef>
 #include <cstdint>
@@ -25,13 +24,16 @@
 
 namespace wt {
 
+class ThreadPool;
+
 class PhotonGrid {
 public:
     PhotonGrid() = default;
     // The photons of `parts`, concatenated in order; `radius` finite and positive.
     PhotonGrid(const std::vector<const PhotonList*>& parts, float radius) { build(parts, radius); }
-    // The same grid, in this grid's memory (what it held before is gone).
-    void build(const std::vector<const PhotonList*>& parts, float radius);
+    // The same grid, in this grid's memory (what it held before is gone); with the pool's
+    // threads if given (never from inside one of its jobs).
+    void build(const std::vector<const PhotonList*>& parts, float radius, ThreadPool* pool = nullptr);
 
     float radius() const { return radius_; }
     std::size_t size() const { return photons_.size(); }
@@ -77,9 +79,9 @@ private:
     uint64_t mask_ = 0;                // buckets - 1 (a power of two)
     PhotonList photons_;                    // by bucket, each bucket's in input order
     UninitialisedVector<uint32_t> index_;   // each one's place in the input
-    std::vector<uint32_t> start_;           // bucket b's photons are [start_[b], start_[b + 1])
+    UninitialisedVector<uint32_t> start_;   // bucket b's photons are [start_[b], start_[b + 1])
     UninitialisedVector<uint32_t> bucket_;  // the build's: each input photon's bucket
-    UninitialisedVector<uint32_t> next_;    // the build's: each bucket's next free place
+    UninitialisedVector<uint32_t> next_;    // the build's: each bucket's count, then its next free place
 };
 
 }  // namespace wt

@@ -36,6 +36,7 @@ void PhotonMaps::start_batch(uint32_t begin, uint32_t end, uint64_t items_per_sa
 }
 
 void PhotonMaps::end_batch() {
+    asked_before_ = asked_.exchange(false, std::memory_order_relaxed);
     slots_.clear();
     begin_ = end_ = 0;
 }
@@ -48,13 +49,24 @@ void PhotonMaps::release() {
 
 const PhotonGrid& PhotonMaps::map(uint32_t sample) const {
     if (!has_sample(sample)) throw std::logic_error("PhotonMaps: a sample outside the batch");
+    // Read before written: the flag's cache line is written once a batch, not once a lookup.
+    if (!asked_.load(std::memory_order_relaxed)) asked_.store(true, std::memory_order_relaxed);
+    return build(sample, nullptr);
+}
+
+void PhotonMaps::build_if_asked_before(ThreadPool& pool) {
+    if (!asked_before_) return;
+    for (uint32_t s = begin_; s < end_; ++s) build(s, &pool);
+}
+
+const PhotonGrid& PhotonMaps::build(uint32_t sample, ThreadPool* pool) const {
     Slot& slot = *slots_[sample - begin_];
     PhotonGrid& grid = grids_[sample - begin_];
     std::call_once(slot.built, [&] {
         std::vector<const PhotonList*> parts;
         const std::size_t first = std::size_t(items_per_sample_) * (sample - begin_);
         for (std::size_t i = first; i < first + items_per_sample_; ++i) parts.push_back(&items_[i]);
-        grid.build(parts, slot.radius);
+        grid.build(parts, slot.radius, pool);
         maps_built_.fetch_add(1, std::memory_order_relaxed);
     });
     return grid;

@@ -8,7 +8,9 @@
 // list (photons(item)), so the lists need no lock and, read in item order, are in light path
 // key order. A sample's grid is built from its items' lists the first time a camera path asks
 // for it, by whichever thread asks first (the others wait): a batch no camera path sees through
-// a mirror or glass builds nothing, and the grid is the same bits whoever builds it.
+// a mirror or glass builds nothing, and the grid is the same bits whoever builds it. Once a
+// batch's camera paths have asked, the next batch's grids are built before its camera paths, by
+// all the threads (build_if_asked_before): they will be asked for too, and then no thread waits.
 
 #include <atomic>
 #include <cstdint>
@@ -22,6 +24,8 @@
 #include "kernels/photons/photon_radius.h"
 
 namespace wt {
+
+class ThreadPool;
 
 class PhotonMaps {
 public:
@@ -44,12 +48,18 @@ public:
 
     // Sample `sample`'s map (which must be in the batch), built on first use; thread-safe.
     const PhotonGrid& map(uint32_t sample) const;
+    // Builds the batch's maps now, with the pool's threads, if the camera paths of the batch
+    // before asked for a map; call between the batch's light paths and its camera paths.
+    void build_if_asked_before(ThreadPool& pool);
     bool has_sample(uint32_t sample) const { return sample >= begin_ && sample < end_; }
     // How many maps were built since construction (tests: "no photon work").
     uint64_t maps_built() const { return maps_built_.load(std::memory_order_relaxed); }
 
 private:
     struct Slot;
+    // Sample `sample`'s map, built by the first call (with the pool's threads if given).
+    const PhotonGrid& build(uint32_t sample, ThreadPool* pool) const;
+
     double initial_radius_;
     PhotonRadiusSchedule schedule_;
     uint32_t begin_ = 0, end_ = 0;
@@ -60,6 +70,8 @@ private:
     // only under its slot's once_flag.
     mutable std::vector<PhotonGrid> grids_;
     mutable std::atomic<uint64_t> maps_built_{0};
+    mutable std::atomic<bool> asked_{false};  // some camera path asked this batch for a map
+    bool asked_before_ = false;               // ... the batch before this one
 };
 
 }  // namespace wt
