@@ -83,7 +83,7 @@ bool is_token(const std::string& s) {
 // Per channel, 8 bytes when every sum of the channel fits in 64 bits, else 16: one pass over
 // the film in memory order.
 std::vector<std::size_t> channel_bytes(const Film& film) {
-    const std::vector<FixedPoint>& sums = film.raw_sums();
+    const auto& sums = film.raw_sums();
     const std::size_t stride = film.channels_per_pixel();
     const FixedPoint lo = std::numeric_limits<int64_t>::min(), hi = std::numeric_limits<int64_t>::max();
     std::vector<bool> wide(stride, false);

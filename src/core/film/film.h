@@ -23,6 +23,7 @@
 #include <glm/ext/vector_double3.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/base/aligned_vector.h"
 #include "core/film/adaptive_state.h"
 #include "core/film/fixed_point.h"
 
@@ -98,8 +99,8 @@ public:
     // The raw state, for checkpoints: per pixel `channels_per_pixel()` sums (radiance RGB, its
     // squares RGB, then the extra channels) in units of 2^-40, and the sample counts.
     std::size_t channels_per_pixel() const { return stride_; }
-    std::vector<FixedPoint>& raw_sums() { return sums_; }
-    const std::vector<FixedPoint>& raw_sums() const { return sums_; }
+    AlignedVector<FixedPoint>& raw_sums() { return sums_; }
+    const AlignedVector<FixedPoint>& raw_sums() const { return sums_; }
     std::vector<uint32_t>& raw_counts() { return count_; }
     const std::vector<uint32_t>& raw_counts() const { return count_; }
 
@@ -119,7 +120,9 @@ private:
     bool splats_;                // the last three extra channels are splat_channels
     std::size_t sample_extras_;  // extra channels added with each sample (the AOVs)
     uint64_t splat_samples_ = 0;
-    std::vector<FixedPoint> sums_;
+    // Aligned: a large film is mapped in huge pages (aligned_vector.h), and each sample of a
+    // batch sweeps all of it.
+    AlignedVector<FixedPoint> sums_;
     std::vector<uint32_t> count_;
     AdaptiveState adaptive_;
 };
