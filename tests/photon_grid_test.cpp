@@ -1,6 +1,7 @@
 // The photon grid against a brute-force search of every photon (the same set, the same estimate
-// bits), the radius schedule against its closed form, the automatic and requested radii, and the
-// scene file's refusal of bad radii.
+// bits), rebuilt in place and built by threads against a fresh one-thread build; when the photon
+// maps build a batch's grids ahead; the radius schedule against its closed form, the automatic
+// and requested radii, and the scene file's refusal of bad radii.
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "core/system/thread_pool.h"
 #include "kernels/photons/photon_gather.h"
 #include "kernels/photons/photon_grid.h"
+#include "kernels/photons/photon_maps.h"
 #include "kernels/photons/photon_radius.h"
 #include "scene_test_helpers.h"
 #include "test_scenes.h"
@@ -185,6 +187,47 @@ TEST(PhotonGrid, BuiltWithThreadsIsTheGridOneThreadBuilds) {
         grid.build({&few}, 0.5f, &pool);  // 4 buckets
         EXPECT_GE(expect_same_lookups_as_a_fresh_grid(grid, {&few}, 0.5f, 14), 100u) << threads << " threads";
     }
+}
+
+// A batch's maps are built before its camera paths, by the pool, only once the batch before was
+// asked for one (a render whose camera paths see photons asks every batch); otherwise on a camera
+// path's first ask. A map built ahead is the grid a fresh build of the sample's lists gives.
+TEST(PhotonMaps, BuildsABatchsMapsAheadOnlyAfterTheBatchBeforeAskedForOne) {
+    const Scene scene = build_scene(test::hexroom(8, 8, 1, 1));
+    PhotonMaps maps(scene);
+    ThreadPool pool(2);
+    const PhotonList photons = random_photons(3000, 1.0f, 31);
+    const auto start = [&](uint32_t begin, uint32_t end) {  // two lists a sample, a third of the photons each
+        maps.start_batch(begin, end, 2);
+        for (std::size_t item = 0; item < 2 * std::size_t(end - begin); ++item)
+            maps.photons(item).assign(photons.begin() + (item % 3) * 1000, photons.begin() + (item % 3 + 1) * 1000);
+    };
+    start(0, 2);
+    maps.build_if_asked_before(pool);  // nothing asked yet
+    EXPECT_EQ(maps.maps_built(), 0u);
+    maps.end_batch();
+    start(2, 4);
+    maps.build_if_asked_before(pool);  // the batch before asked for nothing
+    EXPECT_EQ(maps.maps_built(), 0u);
+    EXPECT_EQ(maps.map(3).size(), 2000u);  // built on the ask
+    EXPECT_EQ(maps.maps_built(), 1u);
+    maps.end_batch();
+    start(4, 6);
+    maps.build_if_asked_before(pool);  // the batch before asked: both maps now
+    EXPECT_EQ(maps.maps_built(), 3u);
+    const PhotonGrid& ahead = maps.map(5);  // built already: no second build
+    EXPECT_EQ(maps.maps_built(), 3u);
+    const PhotonList first(photons.begin() + 2000, photons.end()), second(photons.begin(), photons.begin() + 1000);
+    EXPECT_GT(expect_same_lookups_as_a_fresh_grid(ahead, {&first, &second}, ahead.radius(), 32), 100u);
+    maps.end_batch();
+    start(6, 7);
+    maps.build_if_asked_before(pool);  // asked for sample 5
+    EXPECT_EQ(maps.maps_built(), 4u);
+    maps.end_batch();
+    start(7, 8);
+    maps.build_if_asked_before(pool);  // the batch of sample 6 built its map ahead, but no one asked
+    EXPECT_EQ(maps.maps_built(), 4u);
+    maps.end_batch();
 }
 
 TEST(PhotonGrid, GatherCountsOnlyPhotonsFromTheViewedSideWithinTheVertexLimit) {
