@@ -18,7 +18,7 @@ ASAN_BUILD_DIR ?= build-asan
 TSAN_BUILD_DIR ?= build-tsan
 # The tests that run threads: every suite that renders on the thread pool (the render tests'
 # helpers render on 2 or 3 threads: both integrators, progressive passes and their stop, resume,
-# AOVs, every estimator, light tracing and photons, adaptive sampling, cameras and filters, the
+# AOVs, every estimator, light tracing and photons (and the photon grid's threaded build), adaptive sampling, cameras and filters, the
 # lights, rough materials, instances, textures and emission textures, alpha-tested materials), the BVH build, the pool itself, and the command
 # line's threaded paths through the TSan build of wavetrace (the time limit, resume after a
 # signal, a kill during a checkpoint write, adaptive passes), and the MPI render's rank 0 handing
@@ -27,7 +27,7 @@ TSAN_BUILD_DIR ?= build-tsan
 # thread reaches one of its own interceptors, so "a second Ctrl-C quits at once" is not at once
 # there, and the image may be written before it is seen.
 TSAN_RENDERS = Determinism|EdgeSettings|WavefrontVsReference|RayCounts|AccelRender|WhiteFurnace|Progressive|ResumeRender
-TSAN_ESTIMATORS = Aov|EstimatorOptions|ClampIndirect|MultipleImportance|LightTracing|Photons|PhotonDeterminism|AdaptiveDeterminism|AdaptiveSampling
+TSAN_ESTIMATORS = Aov|EstimatorOptions|ClampIndirect|MultipleImportance|LightTracing|Photons|PhotonDeterminism|PhotonGrid|PhotonMaps|AdaptiveDeterminism|AdaptiveSampling
 TSAN_SCENES = CameraRender|ConstantEnvironment|DirectionalLight|ListedLights|PointLight|SpotLight|MicrofacetRender|PrincipledRender|InstanceRender|TextureRender|EmissionTexture|AlphaRender
 TSAN_SUITES = $(TSAN_RENDERS)|$(TSAN_ESTIMATORS)|$(TSAN_SCENES)|ThreadPool|MemoryEstimate|ChunkDispatch|Bvh\.BuildInvariantsAndDeterminism
 TSAN_CLI = time_limit|resume|aov_resume|checkpoint_kill|adaptive
