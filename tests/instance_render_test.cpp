@@ -15,14 +15,30 @@ namespace {
 
 using namespace wt;
 
+// The scalar kernels shade every hit one at a time; the vector kernels' surface kernel takes the
+// scene's own triangles and spheres and leaves the instances' hits to surface_at, in the camera
+// paths and, with a glass ball and so caustics, in the light paths too.
 TEST(InstanceRender, SameBitsForAnyScheduleAndIsa) {
-    const SceneDescription d = test::instanced_scene(test::test_placements(), true, 6);
-    const test::RenderedFilm reference = test::render_film(d, Integrator::wavefront, 2);
-    EXPECT_GT(reference.result.instance_count, 0u);
-    test::expect_same_film_for_any_schedule(d, reference.film);
-    for (Isa isa : {Isa::sse4, Isa::avx2, Isa::avx512}) {
-        if (!cpu_supports(isa)) continue;
-        EXPECT_TRUE(reference.film == test::render_film(d, Integrator::wavefront, 1, 16, 2048, isa).film) << isa_name(isa);
+    for (bool glass : {false, true}) {
+        SceneDescription d = test::instanced_scene(test::test_placements(), true, 6);
+        if (glass) {
+            Material ball;
+            ball.name = "glass", ball.type = MaterialType::glass, ball.ior = 1.5f;
+            d.materials.push_back(ball);
+            d.spheres.push_back({{5.0f, -3.5f, -1.0f}, 0.9f, uint32_t(d.materials.size() - 1)});
+            d.spheres.push_back({{9.0f, 3.0f, 0.0f}, 0.6f, 0});
+        }
+        const test::RenderedFilm reference = test::render_film(d, Integrator::wavefront, 2);
+        EXPECT_GT(reference.result.instance_count, 0u);
+        if (glass) {
+            EXPECT_GT(reference.result.counts.light_paths, 0u);
+        }
+        test::expect_same_film_for_any_schedule(d, reference.film);
+        for (Isa isa : kAllIsas) {
+            if (!cpu_supports(isa)) continue;
+            EXPECT_TRUE(reference.film == test::render_film(d, Integrator::wavefront, 1, 16, 2048, isa).film)
+                << isa_name(isa) << (glass ? ", with glass" : "");
+        }
     }
 }
 

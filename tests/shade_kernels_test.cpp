@@ -27,6 +27,7 @@
 #include "kernels/queues/diffuse_vertex_queue.h"
 #include "kernels/queues/ray_queues.h"
 #include "kernels/queues/surface_chunk.h"
+#include "instance_scenes.h"
 #include "test_scenes.h"
 
 namespace wt {
@@ -334,17 +335,20 @@ TEST(ShadeKernels, DiffuseLightSamplesEqualDirectLightSamplerBitForBit) {
     }
 }
 
-// Hits on every triangle and sphere of `scene`, then on random ones, at random barycentrics and
-// distances, with misses among them, in chunks of every length: the surface kernel against
-// surface_at on every ISA and both triangle tests; every 13th hit at the midpoint of an edge, on
-// `edge_prim` where one is given. Returns the hits on triangles that were smooth and those that
+// Hits on every triangle and sphere of `scene` (its own and its instances'), then on random ones,
+// at random barycentrics and distances, with misses among them, in chunks of every length: the
+// surface kernel against surface_at on every ISA and both triangle tests, for the hits it
+// computes (surface_kernel_ids; an instance's are surface_at's, and the kernel must still get
+// the lanes beside them right); every 13th hit at the midpoint of an edge, on `edge_prim` where
+// one is given. Returns the hits on the scene's own triangles that were smooth and those that
 // were not.
 std::pair<std::size_t, std::size_t> expect_surface_points_equal_surface_at(Scene& scene, uint32_t seed,
                                                                            uint32_t edge_prim = kNoHit) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    EXPECT_TRUE(surface_kernel_covers(scene));
-    const uint32_t primitives = uint32_t(scene.triangles.size() + scene.spheres.size());
+    const uint32_t own = surface_kernel_ids(scene);
+    EXPECT_EQ(own, uint32_t(scene.triangles.size() + scene.spheres.size()));
+    const uint32_t primitives = uint32_t(own + scene.instances.triangle_count);
     const std::size_t n = std::max<std::size_t>(3 * SurfaceChunk::kSize + 7, primitives + SurfaceChunk::kSize + 7);
     RayQueue rays;
     rays.reserve(n);
@@ -361,7 +365,7 @@ std::pair<std::size_t, std::size_t> expect_surface_points_equal_surface_at(Scene
         }
         hits.set(i, {10.0f * unit(rng), prim, u, v});
     }
-    std::size_t spheres = 0, smooth = 0, flat = 0;
+    std::size_t spheres = 0, smooth = 0, flat = 0, instanced = 0;
     for (TriangleTest test : {TriangleTest::moller_trumbore, TriangleTest::watertight}) {
         scene.settings.accuracy.triangles = test;
         for (Isa isa : supported_isas()) {
@@ -372,6 +376,10 @@ std::pair<std::size_t, std::size_t> expect_surface_points_equal_surface_at(Scene
                 for (std::size_t k = 0; k < count; ++k) {
                     const Hit hit = hits.hit(first + k);
                     if (!hit.found()) continue;
+                    if (hit.prim >= own) {
+                        ++instanced;
+                        continue;
+                    }
                     const SurfacePoint expected = surface_at(scene, rays.ray(first + k), hit), actual = chunk.at(k);
                     (hit.prim >= scene.triangles.size() ? spheres : expected.smooth ? smooth : flat) += 1;
                     const std::string where = std::string(isa_name(isa)) + ", " + name_of(test) + ", primitive " +
@@ -389,6 +397,7 @@ std::pair<std::size_t, std::size_t> expect_surface_points_equal_surface_at(Scene
         }
     }
     EXPECT_GT(spheres, 0u);
+    EXPECT_EQ(instanced > 0, !scene.instances.empty());
     return {smooth, flat};
 }
 
@@ -449,6 +458,25 @@ TEST(ShadeKernels, SurfacePointsWithVertexNormalsEqualSurfaceAtBitForBit) {
     // the normals cancel, which keep the geometric normal.
     EXPECT_GT(smooth, 0u);
     EXPECT_GT(flat, 0u);
+}
+
+// A scene with instances (placed with and without vertex normals) beside its own triangles, with
+// vertex normals, and spheres: the kernel's lanes among the instances' hits.
+TEST(ShadeKernels, SurfacePointsBesideInstancesEqualSurfaceAtBitForBit) {
+    for (bool normals : {false, true}) {
+        SceneDescription d = test::instanced_scene(test::test_placements(), normals, 6);
+        d.spheres.push_back({{5.0f, 3.0f, 1.0f}, 0.7f, 0});
+        d.spheres.push_back({{8.0f, -3.0f, 0.0f}, 1.2f, 1});
+        TriangleMesh smooth_mesh = test::icosphere(1, 0.8f, glm::vec3(3.0f, -2.0f, 2.0f));
+        for (const glm::vec3& v : smooth_mesh.vertices) smooth_mesh.normals.push_back(glm::normalize(v - glm::vec3(3.0f, -2.0f, 2.0f)));
+        d.meshes.push_back(smooth_mesh);
+        Scene scene = build_scene(d);
+        ASSERT_FALSE(scene.instances.empty());
+        ASSERT_GT(scene.instances.triangle_count, 0u);
+        const auto [smooth, flat] = expect_surface_points_equal_surface_at(scene, normals ? 26 : 25);
+        EXPECT_GT(smooth, 0u);
+        EXPECT_GT(flat, 0u);
+    }
 }
 
 // Vertices past the queue's count are never pushed, whatever the padding lanes hold.

@@ -119,7 +119,8 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, con
         if (!targets || ws.connections.occluded[i])
             ws.rays.push(ws.connections.ray(i), ws.connections.contribution(i), ws.connections.path[i], 0);
     counts.light_paths += end - first;
-    const bool surface_kernel = shade.width > 1 && surface_kernel_covers(scene_);
+    const bool surface_kernel = shade.width > 1;
+    const uint32_t surface_kernel_ids_end = surface_kernel_ids(scene_);
     for (uint32_t vertex = 1; ws.rays.count > 0; ++vertex) {
         counts.light_rays += ws.rays.count;
         intersect_closest_stage(context, ws.rays, ws.hits, false);
@@ -141,7 +142,7 @@ void LightTracingPass::trace_item_wavefront(const IntersectContext& context, con
             const uint32_t slot = ws.rays.path[i];
             const LightRay at = ws.light_ray(i);
             LightVertex v;
-            if (surface_kernel) {
+            if (surface_kernel && hit.prim < surface_kernel_ids_end) {
                 const SurfacePoint surface = ws.surfaces.at(in_chunk);
                 // Flat mirrors and glass go to the shade kernels' queue, continued by the chunk.
                 if (tracer_.queue_specular(ws.key[slot], vertex, at, surface, slot, ws.specular)) {

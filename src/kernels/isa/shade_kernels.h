@@ -26,8 +26,8 @@ struct ShadeKernels {
     Isa isa;
     int width;
     // surface_at for hits [first, first + count) of the queue (count at most SurfaceChunk::kSize),
-    // into the chunk from its start, in a scene without instances (surface_kernel_covers,
-    // kernels/shading/surface_points.h).
+    // into the chunk from its start, for the hits on the scene's own triangles and spheres
+    // (surface_kernel_ids, kernels/shading/surface_points.h).
     void (*surface_points)(const Scene&, const RayQueue&, const HitQueue&, std::size_t first, std::size_t count, SurfaceChunk&);
     // continue_path for every vertex of the queue, in its order; the paths that go on are appended
     // to `next` (kernels/shading/diffuse_continuation.h).

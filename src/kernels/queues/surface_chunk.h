@@ -1,8 +1,10 @@
 #pragma once
 // The surface points (SurfacePoint, core/scene/scene.h) of a chunk of a shade stage's hits,
 // computed N at a time by the surface kernel (kernels/shading/surface_points.h) before the shade
-// loop reads them, in scenes whose every hit is on a triangle or a sphere of the scene's own
-// lists (no instances: surface_kernel_covers). One hit at a time, the triangle's normal (a cross
+// loop reads them, for the hits on the triangles and spheres of the scene's own lists
+// (surface_kernel_ids); an instance's hits are surface_at's, one at a time, as they were
+// before the kernel (placing a point needs its instance's transforms, and each instanced mesh
+// has its own arrays to gather from). One hit at a time, the triangle's normal (a cross
 // product, a square root, three divisions), its interpolated vertex normal (three gathers of a
 // normal, a square root, three divisions) and the sphere's normal (a square root, a division)
 // were dependent chains in every iteration of the loop.
@@ -15,8 +17,9 @@
 
 namespace wt {
 
-// Whether surface_at's work for every hit of the scene is the surface kernel's.
-inline bool surface_kernel_covers(const Scene& scene) { return scene.instances.empty(); }
+// The ids whose surface points the surface kernel computes: [0, this), the scene's own triangles
+// and spheres (the instances' ids come after them, scene_instances.h).
+inline uint32_t surface_kernel_ids(const Scene& scene) { return uint32_t(scene.triangles.size() + scene.spheres.size()); }
 
 struct SurfaceChunk {
     // Hits per chunk: a multiple of every width; the chunk stays in L1.

@@ -4,8 +4,8 @@
 // it), the unit normal of the edges' cross product and, in a scene with vertex normals, the
 // shading normal blended from them (ShadingNormalTable::at, blend_normals); on spheres, the
 // point projected back onto the sphere, its bound and the outward normal. Bit for bit the scalar
-// code, in the way of diffuse_continuation.h (tests/shade_kernels_test.cpp). Only for scenes
-// without instances (surface_kernel_covers); lanes whose ray missed are left unspecified.
+// code, in the way of diffuse_continuation.h (tests/shade_kernels_test.cpp). Lanes whose ray
+// missed or hit an instance (surface_kernel_ids) are left unspecified.
 
 #include <cstdint>
 
@@ -109,7 +109,7 @@ void surface_points_with(const Scene& scene, const RayQueue& rays, const HitQueu
                          SurfaceChunk& out) {
     const TriangleSoA& t = scene.triangles;
     const SphereSoA& s = scene.spheres;
-    const vint<N> triangle_count(int32_t(t.size()));
+    const vint<N> triangle_count(int32_t(t.size())), own_count(int32_t(surface_kernel_ids(scene)));
     const bool watertight = scene.settings.accuracy.triangles == TriangleTest::watertight;
     const TriangleDataPrefetch prefetch(scene, hits, first, count);
     if constexpr (kPrefetch) prefetch.indices(0, 2 * N), prefetch.vertices(0, N);
@@ -122,7 +122,7 @@ void surface_points_with(const Scene& scene, const RayQueue& rays, const HitQueu
                                                    vint<N>(int32_t(kNoHit)));
         const vbool<N> found = prim != vint<N>(int32_t(kNoHit));
         const vbool<N> triangle = found & (prim < triangle_count);  // found ids are below 2^31
-        const vbool<N> sphere = found & ~triangle;
+        const vbool<N> sphere = found & ~triangle & (prim < own_count);  // not an instance's
 
         // Triangles: v0 + u e1 + v e2 from the vertices, triangle_point_error, TriangleSoA::normal.
         const auto vertex = [&](const AlignedVector<uint32_t>& index) {

@@ -53,7 +53,8 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
     // One lane gains nothing from a kernel and pays for its queue: the scalar kernels' loop is the
     // plain one (their width-1 shade kernels are the tests' and the perf gate's reference).
     const bool vector_kernels = kernels.width > 1;
-    const bool surface_kernel = vector_kernels && surface_kernel_covers(scene);
+    const bool surface_kernel = vector_kernels;
+    const uint32_t surface_kernel_ids_end = surface_kernel_ids(scene);
     SurfaceChunk& surfaces = chunks.surfaces;
     DiffuseVertexQueue& diffuse = chunks.diffuse;
     SpecularVertexQueue& specular = chunks.specular;
@@ -101,7 +102,8 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
         const PathSeed path{paths.key[slot], paths.sample[slot]};
         const glm::vec3 throughput = rays.throughput(i);
         // (Not const: a normal map may change its shading normal.)
-        SurfacePoint surface = surface_kernel ? surfaces.at(in_chunk) : surface_at(scene, ray, hit);
+        SurfacePoint surface = surface_kernel && hit.prim < surface_kernel_ids_end ? surfaces.at(in_chunk)
+                                                                                   : surface_at(scene, ray, hit);
         // Textured scenes run the kRough loop (stage_shade.cpp): without it, the loop is as it was.
         const Material& m = kRough ? material_at(scene, hit, surface, ray, bounce == 0, textured)
                                    : scene.materials[surface.material];
