@@ -26,7 +26,7 @@ double shortest_double(float value) {
     return std::stod(std::string(digits, end));
 }
 
-json colour(const glm::vec3& c) { return {shortest_double(c.x), shortest_double(c.y), shortest_double(c.z)}; }
+json json_vec3(const glm::vec3& c) { return {shortest_double(c.x), shortest_double(c.y), shortest_double(c.z)}; }
 
 json hexroom_json() {
     const std::string path = std::string(WT_SCENES_DIR) + "/hexroom.json";
@@ -62,12 +62,35 @@ std::string scene_text(const json& scene) {
 void write_scene(const std::string& path, const BenchmarkMesh& mesh) {
     json scene = hexroom_json();
     const Material material = added_mesh_material(mesh.name);
-    scene["materials"][mesh.name] = {{"type", "lambertian"}, {"albedo", colour(material.albedo)}};
+    scene["materials"][mesh.name] = {{"type", "lambertian"}, {"albedo", json_vec3(material.albedo)}};
     scene["shapes"].push_back({{"type", "mesh_file"}, {"file", std::string(mesh.name) + ".ply"}, {"material", mesh.name}});
     write_file_atomically(path, [&](std::ostream& out) { out << scene_text(scene); });
 }
 
+// The hexroom with the mesh placed kBenchmarkInstances times, each copy its ball's worth of air
+// clear of the room's walls, spheres and light.
+void write_instanced_scene(const std::string& path, const BenchmarkMesh& mesh) {
+    json scene = hexroom_json();
+    const Material material = added_mesh_material(mesh.name);
+    scene["materials"][mesh.name] = {{"type", "lambertian"}, {"albedo", json_vec3(material.albedo)}};
+    scene["meshes"] = {{mesh.name, {{"type", "mesh_file"}, {"file", std::string(mesh.name) + ".ply"}, {"material", mesh.name}}}};
+    const glm::vec3 places[kBenchmarkInstances] = {{3.0f, -3.5f, -3.5f}, {3.0f, 3.5f, -3.5f}, {5.0f, -4.0f, 2.0f},
+                                                   {5.0f, 4.0f, 2.0f},   {9.0f, -3.0f, 2.5f}, {9.0f, 3.0f, 2.5f},
+                                                   {11.5f, 0.0f, 1.0f},  {7.0f, 0.0f, 3.0f}};
+    json transforms = json::array();
+    for (const glm::vec3& place : places) {  // s x + t puts the centre c at s c + t = place
+        const glm::vec3 t = place - kBenchmarkInstanceScale * kBenchmarkSphereCentre;
+        transforms.push_back({{"scale", shortest_double(kBenchmarkInstanceScale)}, {"translate", json_vec3(t)}});
+    }
+    scene["shapes"].push_back({{"type", "instance"}, {"of", mesh.name}, {"transforms", transforms}});
+    write_file_atomically(path, [&](std::ostream& out) { out << scene_text(scene); });
+}
+
 }  // namespace
+
+std::string bench_instanced_scene_file(const std::string& directory, const BenchmarkMesh& mesh) {
+    return (std::filesystem::path(directory) / ("hexroom_" + std::string(mesh.name) + "_instances.json")).string();
+}
 
 std::string bench_scene_file(const std::string& directory, const BenchmarkMesh& mesh) {
     return (std::filesystem::path(directory) / ("hexroom_" + std::string(mesh.name) + ".json")).string();
@@ -84,6 +107,7 @@ void write_bench_data(const std::string& directory, const BenchmarkMesh& mesh) {
     write_obj(stem + ".obj", triangles, comment);
     write_glb(stem + ".glb", triangles, comment);
     write_scene(bench_scene_file(directory, mesh), mesh);
+    write_instanced_scene(bench_instanced_scene_file(directory, mesh), mesh);
 }
 
 }  // namespace wt::bench

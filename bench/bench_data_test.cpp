@@ -333,6 +333,31 @@ TEST_F(MeshFiles, ObjAndGlbImportToTheSameMeshAsPly) {
     }
 }
 
+// The instanced scene: the hexroom with the mesh stored once and placed kBenchmarkInstances
+// times, each copy's ball (the mesh's, scaled) clear of the others', the room's spheres and
+// walls, and the light.
+TEST_F(MeshFiles, TheInstancedSceneFilePlacesTheMeshInTheRoomsAir) {
+    write_bench_data(directory_.string(), kMesh10k);
+    const Scene scene = build_scene(load_scene_file(bench_instanced_scene_file(directory_.string(), kMesh10k)));
+    const SceneDescription hexroom = hexroom_description(8, 8, 1);
+    ASSERT_EQ(scene.instances.instances.size(), std::size_t(kBenchmarkInstances));
+    ASSERT_EQ(scene.instances.meshes.size(), 1u);
+    const std::size_t triangles = displaced_sphere_triangle_count(benchmark_sphere(kMesh10k.segments_u, kMesh10k.segments_v));
+    EXPECT_EQ(scene.instances.meshes[0].triangles.size(), triangles);
+    EXPECT_EQ(scene.instances.triangle_count, uint64_t(kBenchmarkInstances) * triangles);
+    const float radius = kBenchmarkInstanceScale * kBenchmarkSphereBoundingRadius;
+    std::vector<glm::vec3> centres;
+    for (const Instance& instance : scene.instances.instances) {
+        const glm::vec3 c = instance.to_world.point(kBenchmarkSphereCentre);
+        for (const glm::vec3& other : centres) EXPECT_GT(glm::distance(c, other), 2.0f * radius);
+        for (const Sphere& sphere : hexroom.spheres) EXPECT_GT(glm::distance(c, sphere.center), radius + sphere.radius);
+        EXPECT_LT(c.z + radius, 4.99f);   // below the light and the ceiling
+        EXPECT_GT(c.z - radius, -5.0f);   // above the floor
+        EXPECT_LT(std::abs(c.y) + radius, 6.0f);  // between the side walls
+        centres.push_back(c);
+    }
+}
+
 TEST_F(MeshFiles, AMissingSceneFileMakesTheSceneUnavailable) {
     try {
         hexroom_with_sphere_description(directory_.string(), kMesh10k, 8, 8, 1);
