@@ -98,6 +98,68 @@ end_header
     EXPECT_TRUE(scene.meshes[0].normals.empty());
 }
 
+// Every binary type, in both byte orders, as coordinates, skipped properties, a list's count and
+// its items: each is read at its own size, and a wrong size would shift every later value.
+TEST_F(PlyImport, EveryBinaryTypeInBothByteOrders) {
+    for (const bool big_endian : {false, true}) {
+        wt::test::Bytes b(big_endian);
+        b.text(std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") + " 1.0\n");
+        b.text("element vertex 3\nproperty char x\nproperty ushort y\nproperty double z\nproperty short s\n"
+               "property uint u\nproperty float f\nproperty list int uchar skipped\n");
+        b.text("element face 2\nproperty int8 flag\nproperty list ushort uint16 vertex_indices\nend_header\n");
+        const int8_t x[3] = {-3, 0, 127};
+        const uint16_t y[3] = {65535, 0, 2};
+        const double z[3] = {0.125, -1e10, 3.0};
+        for (int v = 0; v < 3; ++v) {
+            b.put(x[v]).put(y[v]).put(z[v]).put(int16_t(-32768 + v)).put(uint32_t(0xfffffff0u + uint32_t(v))).put(float(v) * 0.5f);
+            b.put(int32_t(v));  // the skipped list: v uchar items
+            for (int k = 0; k < v; ++k) b.put(uint8_t(200 + k));
+        }
+        b.put(int8_t(-1)).put(uint16_t(3)).put(uint16_t(2)).put(uint16_t(1)).put(uint16_t(0));
+        b.put(int8_t(5)).put(uint16_t(4)).put(uint16_t(0)).put(uint16_t(1)).put(uint16_t(2)).put(uint16_t(1));
+        write("types.ply", b.str());
+        const SceneDescription scene = load_file("types.ply");
+        ASSERT_EQ(scene.meshes.size(), 1u) << (big_endian ? "big" : "little") << " endian";
+        EXPECT_EQ(scene.meshes[0].vertices, (std::vector<glm::vec3>{{-3, 65535, 0.125f}, {0, 0, -1e10f}, {127, 2, 3}}));
+        EXPECT_EQ(scene.meshes[0].triangles, (Triangles{{2, 1, 0}, {0, 1, 2}, {0, 2, 1}}));
+    }
+}
+
+// A file several times the reader's 1 MiB buffer, whose 24-byte vertex records and 17-byte
+// faces straddle the buffer's refills: every record as written.
+TEST_F(PlyImport, BinaryFileLargerThanTheReadBufferKeepsEveryRecord) {
+    constexpr int kSide = 300;  // 90,000 vertices, 2 * 299^2 triangles: about 3.7 MB
+    std::vector<std::array<float, 3>> vertices, normals;
+    for (int j = 0; j < kSide; ++j)
+        for (int i = 0; i < kSide; ++i) {
+            vertices.push_back({float(i), float(j), float((i * 7 + j * 13) % 11) * 0.25f});
+            normals.push_back({0.0f, 0.6f, 0.8f});
+        }
+    std::vector<std::vector<int32_t>> faces;
+    for (int j = 0; j + 1 < kSide; ++j)
+        for (int i = 0; i + 1 < kSide; ++i) {
+            const int32_t a = j * kSide + i;
+            faces.push_back({a, a + 1, a + 1 + kSide, a + kSide});
+        }
+    for (const bool big_endian : {false, true}) {
+        write("big.ply", binary_ply(big_endian, vertices, faces, normals));
+        const SceneDescription scene = load_file("big.ply");
+        ASSERT_EQ(scene.meshes.size(), 1u);
+        const TriangleMesh& mesh = scene.meshes[0];
+        ASSERT_EQ(mesh.vertices.size(), vertices.size());
+        ASSERT_EQ(mesh.triangles.size(), 2 * faces.size());
+        for (std::size_t v = 0; v < vertices.size(); ++v)
+            ASSERT_EQ(mesh.vertices[v], glm::vec3(vertices[v][0], vertices[v][1], vertices[v][2])) << "vertex " << v;
+        for (std::size_t f = 0; f < faces.size(); ++f) {
+            const auto& q = faces[f];
+            ASSERT_EQ(mesh.triangles[2 * f], (std::array<uint32_t, 3>{uint32_t(q[0]), uint32_t(q[1]), uint32_t(q[2])})) << "face " << f;
+            ASSERT_EQ(mesh.triangles[2 * f + 1], (std::array<uint32_t, 3>{uint32_t(q[0]), uint32_t(q[2]), uint32_t(q[3])})) << "face " << f;
+        }
+        ASSERT_EQ(mesh.normals.size(), vertices.size());
+        EXPECT_NEAR(mesh.normals.back().z, 0.8f, 1e-6f);
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Bad input
 

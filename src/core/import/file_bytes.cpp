@@ -30,7 +30,7 @@ bool FileBytes::refill() {
     return n > 0;
 }
 
-bool FileBytes::read(void* out, std::size_t n) {
+bool FileBytes::read_across_refill(void* out, std::size_t n) {
     while (end_ - pos_ < n)
         if (!refill()) return false;
     std::memcpy(out, buffer_.data() + pos_, n);

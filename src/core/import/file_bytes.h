@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,7 +17,14 @@ public:
     explicit FileBytes(const std::string& path);
 
     // Copies the next n bytes to out; false (and nothing consumed) at the end of the file.
-    bool read(void* out, std::size_t n);
+    // Inline for the buffered case: a binary mesh is millions of reads of a few bytes, and with
+    // a constant n the copy is one load.
+    bool read(void* out, std::size_t n) {
+        if (end_ - pos_ < n) return read_across_refill(out, n);
+        std::memcpy(out, buffer_.data() + pos_, n);
+        pos_ += n;
+        return true;
+    }
     // The next line without its "\n" or "\r\n"; false at the end of the file.
     bool read_line(std::string& line);
     // Offset of the next byte to be read.
@@ -25,6 +33,7 @@ public:
 
 private:
     bool refill();  // keeps the unread bytes, appends more; false if nothing more was read
+    bool read_across_refill(void* out, std::size_t n);
 
     std::string path_;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_;

@@ -3,6 +3,7 @@
 // every message can name the line (ASCII) or byte offset (binary) of the record at fault.
 // Our own reader rather than assimp's: see README.md, Dependencies.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -106,6 +107,8 @@ const char* type_name(PlyType t) {
     return "?";
 }
 
+const std::string kNoElement = "(no element)";
+
 // Reads the records of one file; `where()` names the current record for messages.
 class PlyReader {
 public:
@@ -130,7 +133,7 @@ private:
 
     std::string where() const {
         if (header_.format == PlyFormat::ascii || in_header_) return path_ + ":" + std::to_string(line_);
-        return path_ + ": byte " + std::to_string(record_offset_) + " (" + record_name_ + ")";
+        return path_ + ": byte " + std::to_string(record_offset_) + " (" + record_name() + ")";
     }
 
     void read_header() {
@@ -207,29 +210,36 @@ private:
     // One value of the current record, as double (exact for every PLY integer type).
     double value(PlyType type) {
         if (header_.format == PlyFormat::ascii) return ascii_value(type);
-        unsigned char bytes[8];
-        const std::size_t n = type_size(type);
-        if (!in_.read(bytes, n))
-            fail("the file ends inside this record (" + std::to_string(in_.size()) + " bytes in the file)");
-        // The host is little-endian (x86-64, AArch64 as Debian runs them).
-        if (header_.format == PlyFormat::binary_big_endian)
-            for (std::size_t i = 0; i < n / 2; ++i) std::swap(bytes[i], bytes[n - 1 - i]);
         switch (type) {
-        case PlyType::int8: return double(int8_t(bytes[0]));
-        case PlyType::uint8: return double(bytes[0]);
-        case PlyType::int16: { int16_t v; std::memcpy(&v, bytes, 2); return v; }
-        case PlyType::uint16: { uint16_t v; std::memcpy(&v, bytes, 2); return v; }
-        case PlyType::int32: { int32_t v; std::memcpy(&v, bytes, 4); return v; }
-        case PlyType::uint32: { uint32_t v; std::memcpy(&v, bytes, 4); return v; }
-        case PlyType::float32: { float v; std::memcpy(&v, bytes, 4); return v; }
-        case PlyType::float64: { double v; std::memcpy(&v, bytes, 8); return v; }
+        case PlyType::int8: return binary_value<int8_t>();
+        case PlyType::uint8: return binary_value<uint8_t>();
+        case PlyType::int16: return binary_value<int16_t>();
+        case PlyType::uint16: return binary_value<uint16_t>();
+        case PlyType::int32: return binary_value<int32_t>();
+        case PlyType::uint32: return binary_value<uint32_t>();
+        case PlyType::float32: return binary_value<float>();
+        case PlyType::float64: return binary_value<double>();
         }
         return 0.0;
     }
 
+    // One binary value of type T: read with a size known at compile time, so that a file of
+    // millions of records is read at memory speed rather than a library call per value.
+    template <typename T>
+    double binary_value() {
+        unsigned char bytes[sizeof(T)];
+        if (!in_.read(bytes, sizeof(T)))
+            fail("the file ends inside this record (" + std::to_string(in_.size()) + " bytes in the file)");
+        // The host is little-endian (x86-64, AArch64 as Debian runs them).
+        if (header_.format == PlyFormat::binary_big_endian) std::reverse(bytes, bytes + sizeof(T));
+        T v;
+        std::memcpy(&v, bytes, sizeof(T));
+        return double(v);
+    }
+
     double ascii_value(PlyType type) {
         while (*cursor_ == ' ' || *cursor_ == '\t') ++cursor_;
-        if (*cursor_ == '\0') fail("too few values on this line for element \"" + record_name_ + "\"");
+        if (*cursor_ == '\0') fail("too few values on this line for element \"" + record_name() + "\"");
         char* end = nullptr;
         const double v = std::strtod(cursor_, &end);
         const std::string token(cursor_, std::strcspn(cursor_, " \t"));
@@ -241,14 +251,18 @@ private:
         return v;
     }
 
+    // The element and index of the current record, named only when a message needs them.
+    std::string record_name() const { return *record_element_ + " " + std::to_string(record_index_); }
+
     void begin_record(const std::string& name, uint64_t index) {
-        record_name_ = name + " " + std::to_string(index);
+        record_element_ = &name;
+        record_index_ = index;
         if (header_.format != PlyFormat::ascii) {
             record_offset_ = in_.offset();
             return;
         }
         do {  // blank lines between records are tolerated
-            if (!in_.read_line(line_buffer_)) fail("the file ends before " + record_name_);
+            if (!in_.read_line(line_buffer_)) fail("the file ends before " + record_name());
             ++line_;
         } while (line_buffer_.find_first_not_of(" \t") == std::string::npos);
         cursor_ = line_buffer_.c_str();
@@ -280,6 +294,10 @@ private:
             if (has_normals_) mesh.normals.reserve(std::size_t(std::min(element.count, cap)));
         }
         if (is_face && indices < 0) fail_at_file("the face element has no vertex_indices list");
+        if (is_face) {  // a face is at least one triangle: reserved up to what the file's bytes can hold
+            const uint64_t cap = in_.size() / smallest_record_bytes(element, indices);
+            mesh.triangles.reserve(mesh.triangles.size() + std::size_t(std::min(element.count, cap)));
+        }
 
         double values[16];
         std::vector<uint32_t> polygon;
@@ -314,6 +332,19 @@ private:
         }
     }
 
+    // The fewest bytes a record of `element` can take, its list `indices` holding at least 3
+    // items: in ASCII a digit and a separator a value; in binary the types' sizes.
+    uint64_t smallest_record_bytes(const PlyElement& element, int indices) const {
+        uint64_t bytes = 0;
+        for (int i = 0; i < int(element.properties.size()); ++i) {
+            const PlyProperty& p = element.properties[std::size_t(i)];
+            const uint64_t items = i == indices ? 3 : 0;
+            if (header_.format == PlyFormat::ascii) bytes += 2 * ((p.is_list ? 1 : 0) + (p.is_list ? items : 1));
+            else bytes += p.is_list ? type_size(p.count_type) + items * type_size(p.type) : type_size(p.type);
+        }
+        return std::max<uint64_t>(bytes, 1);
+    }
+
     void read_vertex(const double* values, const int* xyz, const int* nxyz, ImportedMesh& mesh) {
         glm::vec3 p, n;
         for (int k = 0; k < 3; ++k) {
@@ -341,7 +372,8 @@ private:
     uint64_t vertex_count_ = 0;
     uint64_t line_ = 0;
     uint64_t record_offset_ = 0;
-    std::string record_name_;
+    const std::string* record_element_ = &kNoElement;
+    uint64_t record_index_ = 0;
     std::string line_buffer_;
     const char* cursor_ = "";
 };
