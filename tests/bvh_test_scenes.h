@@ -234,7 +234,7 @@ inline Bounds walk(const BvhView& v, uint32_t ref, BvhDump& out) {
             if (sphere) {
                 const float r = at(3, l);
                 b.add(vec(0, l) - r), b.add(vec(0, l) + r);
-            } else if (v.leaf_rows == kWatertightRows) {
+            } else if (v.leaf_vertices) {
                 b.add(vec(0, l)), b.add(vec(3, l)), b.add(vec(6, l));
             } else {
                 const glm::vec3 v0 = vec(0, l), e1 = vec(3, l), e2 = vec(6, l);

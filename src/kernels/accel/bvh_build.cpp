@@ -206,6 +206,7 @@ BvhView bvh_view(const Bvh& bvh) {
     v.max_depth = bvh.stats_.max_depth;
     v.leaves = bvh.primitives_.blocks.data();
     v.leaf_rows = bvh.primitives_.rows();
+    v.leaf_vertices = bvh.primitives_.test == TriangleTest::watertight;
     v.beside = triangle_view(bvh.beside_);
     v.beside_count = uint32_t(bvh.stats_.beside_count);
     v.prefetch_pushed = bvh.stats_.node_bytes + bvh.stats_.primitive_bytes > kBvhPrefetchBytes;

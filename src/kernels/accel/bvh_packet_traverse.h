@@ -91,8 +91,7 @@ WT_KERNEL_INLINE void test_leaf_packet(const BvhView& bvh, uint32_t ref, const R
             if constexpr (T == TriangleTest::watertight)
                 tri = {block_row<N>(block, k, 0, l), block_row<N>(block, k, 3, l), block_row<N>(block, k, 6, l), {}};
             else
-                tri = {block_row<N>(block, k, 0, l), block_row<N>(block, k, 3, l), block_row<N>(block, k, 6, l),
-                       block_row<N>(block, k, 9, l)};
+                tri = with_scaled_normal(block_row<N>(block, k, 0, l), block_row<N>(block, k, 3, l), block_row<N>(block, k, 6, l));
             LaneHits<N> h;
             const vbool<N> hit = intersect_triangles<shape.value>(tr, tri, r.active, state.limit(), h);
             state.record(r.active & hit, h, vint<N>(block_id(block, k, rows - 1, l)));

@@ -24,7 +24,7 @@ void primitive_rows(const TriangleSoA& t, const SphereSoA& s, TriangleTest test,
         std::memcpy(out, row, sizeof row);
     } else {
         const TriangleSoA::Corner c = t.corner(i);
-        const glm::vec3 row[] = {c.v0, c.e1, c.e2, glm::cross(c.e1, c.e2)};
+        const glm::vec3 row[] = {c.v0, c.e1, c.e2};  // the test takes cross(e1, e2) itself (bvh_view.h)
         std::memcpy(out, row, sizeof row);
     }
 }

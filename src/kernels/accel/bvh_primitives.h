@@ -1,7 +1,7 @@
 #pragma once
 // The scene's primitives copied into BVH leaf blocks (bvh_view.h), holding only what the
-// scene's primitive tests read (v0, the edges and the scaled normal for Moller-Trumbore; the
-// three vertices for the watertight test; centre and radius for spheres) and each one's scene
+// scene's primitive tests read (v0 and the edges for Moller-Trumbore, whose leaf test takes
+// their cross product itself; the three vertices for the watertight test; centre and radius for spheres) and each one's scene
 // id, so a leaf test returns the flat kernels' bits.
 
 #include <cstddef>

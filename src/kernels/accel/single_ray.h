@@ -135,7 +135,7 @@ struct TriangleBlock {
         if constexpr (T == TriangleTest::watertight)
             return {rows<N>(0, c, n), rows<N>(3, c, n), rows<N>(6, c, n), {}};
         else
-            return {rows<N>(0, c, n), rows<N>(3, c, n), rows<N>(6, c, n), rows<N>(9, c, n)};
+            return with_scaled_normal(rows<N>(0, c, n), rows<N>(3, c, n), rows<N>(6, c, n));
     }
     template <int N>
     [[gnu::always_inline]] vint<N> ids(uint32_t c, int n) const {

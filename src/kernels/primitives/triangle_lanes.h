@@ -57,6 +57,13 @@ struct TriangleLanes {
     Vec3<N> p0, p1, p2, n;
 };
 
+// A Moller-Trumbore triangle from a BVH leaf, which keeps no normal (bvh_view.h): its scaled
+// normal is cross(e1, e2) in glm::cross's order, the bits the flat arrays store.
+template <int N>
+WT_KERNEL_INLINE TriangleLanes<N> with_scaled_normal(const Vec3<N>& v0, const Vec3<N>& e1, const Vec3<N>& e2) {
+    return {v0, e1, e2, cross(e1, e2)};
+}
+
 template <TriangleTest T, int N>
 WT_KERNEL_INLINE TriangleLanes<N> broadcast_triangle(const TriangleView& t, uint32_t i) {
     if constexpr (T == TriangleTest::watertight)
