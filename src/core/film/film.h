@@ -59,6 +59,13 @@ public:
         return true;
     }
 
+    // Asks for the cache lines of the pixel's sums and count, ahead of an add_sample.
+    void prefetch_pixel(uint32_t pixel) const {
+        const char* sums = reinterpret_cast<const char*>(&sums_[std::size_t(pixel) * stride_]);
+        for (std::size_t b = 0; b < stride_ * sizeof(FixedPoint); b += 64) __builtin_prefetch(sums + b, 1);
+        __builtin_prefetch(&count_[pixel], 1);
+    }
+
     // Adds a splat (films with splat channels only). False, and nothing added, for a value that
     // is not finite or would overflow the pixel's sum: the caller counts it, as a dropped sample.
     bool add_splat(uint32_t pixel, const glm::vec3& value);

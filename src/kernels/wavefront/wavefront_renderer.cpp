@@ -8,6 +8,10 @@ namespace wt {
 
 namespace {
 
+// Samples ahead whose pixel sums are asked for while one is added: the film is far larger than
+// the caches, and a batch's shading has pushed its tile's pixels out since their last add.
+constexpr uint32_t kFilmPrefetchSlots = 8;
+
 // Batches of `step` samples of the tile's pixels: `generate(begin, end)` fills the queue with
 // their camera rays, sample-major.
 template <typename Generate>
@@ -34,6 +38,7 @@ void render_batches(const Scene& scene, const IntersectContext& context, uint32_
 
         // Slots are sample-major, so every pixel receives its samples in ascending order.
         for (uint32_t slot = 0; slot < batch_size; ++slot) {
+            if (slot + kFilmPrefetchSlots < batch_size) film.prefetch_pixel(ws.paths.pixel[slot + kFilmPrefetchSlots]);
             ++counts.samples;
             float extra[Film::max_extra_channels];
             if (with_aovs) aov_sample_values(aovs, ws.paths.first_surface[slot], extra);
