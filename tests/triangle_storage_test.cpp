@@ -159,6 +159,44 @@ TEST(TriangleStorage, VerticesAddedAFewAtATimeReallocateLogarithmicallyOften) {
     EXPECT_GE(reallocations, 1u);
 }
 
+
+// A scene's meshes are reserved for before they are added (TriangleSoA::reserve_for): its arrays
+// are allocated once, and then hold exactly the meshes' vertices and triangles. Without the
+// reservation the same scene's arrays move as they grow (asserted too, so the test shows the
+// difference it guards).
+TEST(TriangleStorage, ASceneReservesItsMeshesBeforeAddingThem) {
+    SceneDescription d = test::hexroom_with_meshes(40, 40, 1);
+    std::size_t vertices = 0, triangles = 0;
+    for (const TriangleMesh& m : d.meshes) vertices += m.vertices.size(), triangles += m.triangles.size();
+    ASSERT_GT(triangles, 1000u);
+    const auto fill = [&](TriangleSoA& t, bool reserve) {
+        if (reserve) t.reserve_for(d.meshes);
+        const float* px = t.px.data();
+        const uint32_t* i0 = t.i0.data();
+        std::size_t moves = 0;
+        for (const TriangleMesh& m : d.meshes) {
+            const uint32_t first = t.add_vertices(m.vertices);
+            for (const auto& tri : m.triangles) t.push(first + tri[0], first + tri[1], first + tri[2], m.material);
+            moves += (t.px.data() != px) + (t.i0.data() != i0);
+            px = t.px.data(), i0 = t.i0.data();
+        }
+        return moves;
+    };
+    TriangleSoA reserved, grown;
+    EXPECT_EQ(fill(reserved, true), 0u);
+    EXPECT_GT(fill(grown, false), 0u);
+    EXPECT_EQ(reserved.vertex_count(), vertices);
+    EXPECT_EQ(reserved.size(), triangles);
+    EXPECT_EQ(reserved.px.capacity(), vertices);
+    EXPECT_EQ(reserved.material.capacity(), triangles);
+    EXPECT_EQ(reserved.i2, grown.i2);
+
+    // build_scene reserves the same way (a quad stored as one parallelogram leaves room unused).
+    const Scene scene = build_scene(d);
+    EXPECT_EQ(scene.triangles.px.capacity(), scene.triangles.vertex_count());
+    EXPECT_GE(scene.triangles.i0.capacity(), scene.triangles.size());
+    EXPECT_LE(scene.triangles.i0.capacity(), triangles);
+}
 // A sliver is stored with all three indices on its first vertex, so its edges are exactly zero.
 TEST(TriangleStorage, ASliverCollapsesOntoItsFirstVertex) {
     TriangleSoA t;

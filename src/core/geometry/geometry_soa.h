@@ -57,6 +57,16 @@ struct TriangleSoA {
     std::size_t bytes() const;
     bool is_parallelogram(std::size_t i) const { return i < parallelogram_count; }
 
+    // Room for the meshes' vertices and triangles before they are added, so that a mesh of
+    // millions of triangles is not copied at every doubling of the arrays (each copy into
+    // pages the kernel must first zero). `meshes`: any range of TriangleMesh.
+    template <typename Meshes>
+    void reserve_for(const Meshes& meshes) {
+        std::size_t vertices = vertex_count(), triangles = size();
+        for (const auto& mesh : meshes) vertices += mesh.vertices.size(), triangles += mesh.triangles.size();
+        for (auto* row : {&px, &py, &pz}) row->reserve(vertices);
+        for (auto* row : {&i0, &i1, &i2, &material}) row->reserve(triangles);
+    }
     // Vertices for the triangles pushed after; returns the index of the first, which push()'s
     // indices are offset by. std::length_error past 2^31 - 1 vertices in all.
     uint32_t add_vertices(const std::vector<glm::vec3>& vertices);

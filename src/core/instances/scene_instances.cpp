@@ -47,6 +47,7 @@ void build_instances(const SceneDescription& d, uint32_t first_id, SceneInstance
         const MeshPrototype& proto = d.prototypes[p];
         InstancedMesh& mesh = out.meshes[p];
         mesh.triangles.store_only_for(d.settings.accuracy.triangles);
+        mesh.triangles.reserve_for(proto.parts);
         const bool smooth = std::any_of(proto.parts.begin(), proto.parts.end(),
                                         [](const TriangleMesh& m) { return !m.normals.empty() && !m.triangles.empty(); });
         for (const TriangleMesh& part : proto.parts) {

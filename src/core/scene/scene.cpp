@@ -129,6 +129,7 @@ Scene build_scene(const SceneDescription& description) {
         return !m.normals.empty() && !m.triangles.empty();
     });
     scene.triangles.store_only_for(description.settings.accuracy.triangles);
+    scene.triangles.reserve_for(description.meshes);
     for (std::size_t k = 0; k < description.meshes.size(); ++k) {
         const TriangleMesh& mesh = description.meshes[k];
         check_vertex_attribute_counts(mesh, "mesh " + std::to_string(k) + " has");
