@@ -67,6 +67,7 @@ struct TriangleSoA {
         for (auto* row : {&px, &py, &pz}) row->reserve(vertices);
         for (auto* row : {&i0, &i1, &i2, &material}) row->reserve(triangles);
     }
+
     // Vertices for the triangles pushed after; returns the index of the first, which push()'s
     // indices are offset by. std::length_error past 2^31 - 1 vertices in all.
     uint32_t add_vertices(const std::vector<glm::vec3>& vertices);
