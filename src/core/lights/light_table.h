@@ -67,6 +67,25 @@ public:
     glm::vec3 mean_radiance(std::size_t k) const {
         return emitters_[k].textured ? emitters_[k].radiance * emission_textures_.mean(k) : emitters_[k].radiance;
     }
+
+    // Everything one light sample reads, together: sampling touches one record, not six arrays.
+    struct Emitter {
+        glm::vec3 v0, e1, e2, normal, radiance;
+        float cdf;  // cumulative area fraction up to and including this triangle; the last is 1
+        glm::vec3 abs_v0, abs_e1, abs_e2;  // for the sample's error bound, taken once here
+        bool parallelogram;  // (u, v) uniform in the unit square, not folded into the triangle
+        bool textured;       // its radiance is multiplied by emission_textures_ at the point
+    };
+    // The table's emitters, for the SIMD shade kernels' light points (kernels/shading/light_points.h),
+    // which take a table of at most kCountedEmitters emitters without textures: they pick among
+    // so few by counting, as pick() does.
+    const std::vector<Emitter>& emitters() const { return emitters_; }
+    static constexpr std::size_t kCountedEmitters = 8;
+    bool few_untextured_emitters() const {
+        return emitters_.size() <= kCountedEmitters &&
+               std::none_of(emitters_.begin(), emitters_.end(), [](const Emitter& e) { return e.textured; });
+    }
+
     std::size_t bytes() const {
         return emitters_.capacity() * sizeof(Emitter) + triangles_.capacity() * sizeof(uint32_t) + emission_textures_.bytes();
     }
@@ -88,16 +107,7 @@ private:
                                                 [u_choice](const Emitter& e) { return !(u_choice < e.cdf); });
         return std::size_t(first - emitters_.begin());
     }
-    static constexpr std::size_t kCountedEmitters = 8;
 
-    // Everything one light sample reads, together: sampling touches one record, not six arrays.
-    struct Emitter {
-        glm::vec3 v0, e1, e2, normal, radiance;
-        float cdf;  // cumulative area fraction up to and including this triangle; the last is 1
-        glm::vec3 abs_v0, abs_e1, abs_e2;  // for the sample's error bound, taken once here
-        bool parallelogram;  // (u, v) uniform in the unit square, not folded into the triangle
-        bool textured;       // its radiance is multiplied by emission_textures_ at the point
-    };
     LightSample point_on(std::size_t k, float u0, float u1) const;
 
     std::vector<Emitter> emitters_;

@@ -62,6 +62,8 @@ struct VertexRandom {
     uint64_t base;
 
     VertexRandom(uint64_t key, uint32_t bounce) : base(key + (uint64_t(bounce) << 32) * kGoldenGamma) {}
+    // The vertex whose `base` a queue kept (the SIMD shade stage draws a chunk's numbers at once).
+    static VertexRandom with_base(uint64_t base) { return VertexRandom(base, 0); }
 
     // Dimensions `dimension` and `dimension + 1`; `dimension` must be even.
     UniformPair pair(uint32_t dimension) const {
@@ -75,8 +77,9 @@ struct VertexRandom {
 
 private:
     uint64_t hash(uint32_t dimension) const { return mix64(base + uint64_t(dimension >> 1) * kGoldenGamma); }
-    // 24 bits to [0, 1): every value is exactly representable and 1 is never hit.
-    static float unit_float(uint64_t bits24) { return float(bits24) * 0x1p-24f; }
+    // 24 bits to [0, 1): every value is exactly representable and 1 is never hit. (Converted
+    // from a 32-bit int, the same value: a vector unit converts those in one instruction.)
+    static float unit_float(uint64_t bits24) { return float(int32_t(bits24)) * 0x1p-24f; }
 };
 
 inline float random_float(uint64_t key, uint32_t bounce, uint32_t dimension) { return VertexRandom(key, bounce)(dimension); }

@@ -16,6 +16,7 @@ struct Scene;
 struct SurfaceChunk;
 struct DiffuseLightSampling;
 struct DiffuseVertexQueue;
+class LightTable;
 struct LightPointQueue;
 struct SpecularVertexQueue;
 enum class FresnelModel : uint8_t;
@@ -32,6 +33,12 @@ struct ShadeKernels {
     // continue_path for every vertex of the queue, in its order; the paths that go on are appended
     // to `next` (kernels/shading/diffuse_continuation.h).
     void (*continue_diffuse)(const DiffuseVertexQueue&, const DiffuseContinuation&, RayQueue& next);
+    // The random numbers of every vertex of the queue, pushed undrawn (push_undrawn), and of its
+    // first `light_samples` light samples (kernels/shading/diffuse_random.h).
+    void (*draw_diffuse_random)(DiffuseVertexQueue&, uint32_t light_samples);
+    // The light points of every vertex of the queue from those numbers, for a table with
+    // LightTable::few_untextured_emitters (kernels/shading/light_points.h).
+    void (*pick_light_points)(DiffuseVertexQueue&, const LightTable&, uint32_t light_samples);
     // The light samples of every vertex of the queue that has them, each vertex's in index order;
     // those that can contribute are appended to `shadows` (kernels/shading/diffuse_light_samples.h).
     void (*sample_diffuse_lights)(const DiffuseVertexQueue&, const DiffuseLightSampling&, ShadowQueue& shadows);

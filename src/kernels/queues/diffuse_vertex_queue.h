@@ -57,6 +57,9 @@ struct DiffuseVertexQueue {
     AlignedVector<float> albedo_r, albedo_g, albedo_b;
     AlignedVector<float> oren_nayar_a, oren_nayar_b;  // oren_nayar_terms(); 1 and 0 for Lambertian vertices
     AlignedVector<float> u0, u1, roulette;            // dim::bsdf_u, dim::bsdf_v, dim::roulette
+    // VertexRandom::base of a vertex pushed undrawn (push_undrawn): its draws above and its light
+    // samples' below are the shade kernels' (ShadeKernels::draw_diffuse_random), a chunk at once.
+    AlignedVector<uint64_t> random_base;
     AlignedVector<uint32_t> path;                     // slot in the PathTable
     // kOrenNayar; kSpecularLightElsewhere: the incoming ray's PathContinuation::specular_light_elsewhere;
     // kSamplesLights: the vertex has light samples (gathers_direct_light, and the scene has lights);
@@ -74,6 +77,11 @@ struct DiffuseVertexQueue {
     // with kSamplesLights.
     AlignedVector<float> light_px, light_py, light_pz, light_ex, light_ey, light_ez, light_nx, light_ny, light_nz;
     AlignedVector<float> light_r, light_g, light_b, light_pdf_area;
+    // The light samples' random numbers, sample-major as the points: the point's pair
+    // (dim::light_u, dim::light_v) and dim::light_choice. Drawn by the kernels for undrawn vertices,
+    // then turned into the points above by the kernels (ShadeKernels::pick_light_points), or by
+    // pick_light_points below for a light table the kernels do not take.
+    AlignedVector<float> light_u, light_v, light_choice;
     std::size_t stride = 0;
 
     // Vertices per chunk for this many light samples per vertex: 256 (about 40 KB with one light
@@ -97,20 +105,54 @@ struct DiffuseVertexQueue {
         for (auto* a : {&px, &py, &pz, &ex, &ey, &ez, &nx, &ny, &nz, &snx, &sny, &snz, &dx, &dy, &dz, &throughput_r, &throughput_g, &throughput_b,
                         &albedo_r, &albedo_g, &albedo_b, &oren_nayar_a, &oren_nayar_b, &u0, &u1, &roulette})
             a->resize(stride);
-        path.resize(stride), flags.resize(stride);
+        path.resize(stride), flags.resize(stride), random_base.resize(stride);
         for (auto* a : {&light_px, &light_py, &light_pz, &light_ex, &light_ey, &light_ez, &light_nx, &light_ny, &light_nz,
-                        &light_r, &light_g, &light_b, &light_pdf_area})
+                        &light_r, &light_g, &light_b, &light_pdf_area, &light_u, &light_v, &light_choice})
             a->resize(stride * light_samples_per_vertex);
     }
 
     // Bytes per entry and per light sample, for WavefrontWorkspace::bytes_needed.
-    static constexpr std::size_t kBytesPerEntry = 26 * 4 + 4 + 1;
-    static constexpr std::size_t kBytesPerLightSample = 13 * 4;
+    static constexpr std::size_t kBytesPerEntry = 26 * 4 + 4 + 1 + 8;
+    static constexpr std::size_t kBytesPerLightSample = 16 * 4;
 
     // A vertex; its light samples follow with set_light_sample(count - 1, ...) when it has them.
     // The draws are read only where the path continues past the vertex.
     void push(const SurfacePoint& s, const Material& m, const glm::vec3& d, const glm::vec3& throughput, float bsdf_u,
               float bsdf_v, float roulette_u, uint32_t slot, bool specular_light_elsewhere, bool samples_lights) {
+        const std::size_t i = push_vertex(s, m, d, throughput, slot, specular_light_elsewhere, samples_lights);
+        u0[i] = bsdf_u, u1[i] = bsdf_v, roulette[i] = roulette_u;
+    }
+    // A vertex whose random numbers are VertexRandom's of `base` (core/sampling/rng.h), not yet
+    // drawn: ShadeKernels::draw_diffuse_random draws them, and its light samples' numbers.
+    void push_undrawn(const SurfacePoint& s, const Material& m, const glm::vec3& d, const glm::vec3& throughput,
+                      uint64_t base, uint32_t slot, bool specular_light_elsewhere, bool samples_lights) {
+        random_base[push_vertex(s, m, d, throughput, slot, specular_light_elsewhere, samples_lights)] = base;
+    }
+
+    void set_light_sample(std::size_t entry, uint32_t index, const LightSample& light) {
+        const std::size_t k = index * stride + entry;
+        light_px[k] = light.position.x, light_py[k] = light.position.y, light_pz[k] = light.position.z;
+        light_ex[k] = light.error.x, light_ey[k] = light.error.y, light_ez[k] = light.error.z;
+        light_nx[k] = light.normal.x, light_ny[k] = light.normal.y, light_nz[k] = light.normal.z;
+        light_r[k] = light.radiance.x, light_g[k] = light.radiance.y, light_b[k] = light.radiance.z;
+        light_pdf_area[k] = light.pdf_area;
+    }
+
+    // The light points of the undrawn vertices that sample lights, from their numbers once drawn:
+    // light_sample_point's, for a sampler that always draws the choice.
+    void pick_light_points(const Scene& scene, uint32_t light_samples) {
+        for (std::size_t i = 0; i < count; ++i) {
+            if (!(flags[i] & kSamplesLights)) continue;
+            for (uint32_t j = 0; j < light_samples; ++j) {
+                const std::size_t k = j * stride + i;
+                set_light_sample(i, j, scene.lights.sample(scene.triangles, light_choice[k], light_u[k], light_v[k]));
+            }
+        }
+    }
+
+private:
+    std::size_t push_vertex(const SurfacePoint& s, const Material& m, const glm::vec3& d, const glm::vec3& throughput,
+                            uint32_t slot, bool specular_light_elsewhere, bool samples_lights) {
         const std::size_t i = count++;
         px[i] = s.position.x, py[i] = s.position.y, pz[i] = s.position.z;
         ex[i] = s.error.x, ey[i] = s.error.y, ez[i] = s.error.z;
@@ -125,19 +167,10 @@ struct DiffuseVertexQueue {
         const bool oren_nayar = m.type == MaterialType::oren_nayar;
         const OrenNayarTerms terms = oren_nayar ? oren_nayar_terms(m.sigma) : OrenNayarTerms{1.0f, 0.0f};
         oren_nayar_a[i] = terms.a, oren_nayar_b[i] = terms.b;
-        u0[i] = bsdf_u, u1[i] = bsdf_v, roulette[i] = roulette_u;
         path[i] = slot;
         flags[i] = uint8_t((oren_nayar ? kOrenNayar : 0) | (specular_light_elsewhere ? kSpecularLightElsewhere : 0) |
                            (samples_lights ? kSamplesLights : 0) | (s.smooth ? kSmooth : 0));
-    }
-
-    void set_light_sample(std::size_t entry, uint32_t index, const LightSample& light) {
-        const std::size_t k = index * stride + entry;
-        light_px[k] = light.position.x, light_py[k] = light.position.y, light_pz[k] = light.position.z;
-        light_ex[k] = light.error.x, light_ey[k] = light.error.y, light_ez[k] = light.error.z;
-        light_nx[k] = light.normal.x, light_ny[k] = light.normal.y, light_nz[k] = light.normal.z;
-        light_r[k] = light.radiance.x, light_g[k] = light.radiance.y, light_b[k] = light.radiance.z;
-        light_pdf_area[k] = light.pdf_area;
+        return i;
     }
 };
 

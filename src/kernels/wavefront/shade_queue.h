@@ -6,6 +6,7 @@
 // AOVs runs the loop it ran before they existed, compiled as it was.
 
 #include <algorithm>
+#include <type_traits>
 
 #include "core/path/first_surface.h"
 #include "core/path/glossy_light_sampler.h"
@@ -42,7 +43,11 @@ namespace wt {
 // are still added in the same order (its emission and photons here, its light samples in index
 // order by the shadow stage), and each path's random numbers depend on the path alone, so the
 // order of the queues changes no bit of the image. Not with a lights list, whose samplers and
-// continuations are other code.
+// continuations are other code. With a sampler whose numbers are VertexRandom's hashes (the
+// default's), the diffuse vertices are queued undrawn and the kernels draw a chunk's numbers at
+// once (kernels/shading/diffuse_random.h), and turn the light samples' numbers into points as
+// light_sample_point does (kernels/shading/light_points.h; for a table of many or textured
+// emitters the loop does, DiffuseVertexQueue::pick_light_points).
 template <typename E, bool kRecordAovs, bool kRough, bool kListedLights = false>
 void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounce, const RayQueue& rays, const HitQueue& hits,
                  PathTable& paths, ShadeChunks& chunks, RayQueue& next_rays, ShadowQueue& shadows,
@@ -62,7 +67,15 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
     shadows.count = 0;
     diffuse.clear();
     specular.count = 0;
+    constexpr bool kDrawsInKernels = std::is_base_of_v<VertexRandom, typename E::Sampler>;
+    static_assert(!kDrawsInKernels || E::Sampler::kCheapDraws, "pick_light_points draws every light choice");
+    const bool light_points_in_kernels = has_lights && scene.lights.few_untextured_emitters();
     [[maybe_unused]] const auto shade_diffuse_chunk = [&] {
+        if constexpr (kDrawsInKernels) {
+            kernels.draw_diffuse_random(diffuse, has_lights ? shadow_ray_count : 0);
+            if (light_points_in_kernels) kernels.pick_light_points(diffuse, scene.lights, shadow_ray_count);
+            else if (has_lights) diffuse.pick_light_points(scene, shadow_ray_count);
+        }
         if (has_lights) {
             const DiffuseLightSampling sampling{shadow_ray_count, E::mis && path_continues,
                                                 light_sample_clamp_limit<E>(scene, bounce, shadow_ray_count)};
@@ -132,13 +145,17 @@ void shade_queue(const Scene& scene, const ShadeKernels& kernels, uint32_t bounc
                 const bool samples_lights = has_lights && gathers_direct_light(m);
                 if (!samples_lights && !path_continues) continue;
                 const typename E::Sampler random(path, bounce, shadow_ray_count);
-                ContinuationRandom draws{};
-                if (path_continues) draws = continuation_random<E>(random);
-                diffuse.push(surface, m, ray.direction, throughput, draws.direction.first, draws.direction.second,
-                             draws.choice_and_roulette.second, slot, elsewhere, samples_lights);
-                if (samples_lights)
-                    for (uint32_t j = 0; j < shadow_ray_count; ++j)
-                        diffuse.set_light_sample(diffuse.count - 1, j, light_sample_point<E>(scene, random, j));
+                if constexpr (kDrawsInKernels) {
+                    diffuse.push_undrawn(surface, m, ray.direction, throughput, random.base, slot, elsewhere, samples_lights);
+                } else {
+                    ContinuationRandom draws{};
+                    if (path_continues) draws = continuation_random<E>(random);
+                    diffuse.push(surface, m, ray.direction, throughput, draws.direction.first, draws.direction.second,
+                                 draws.choice_and_roulette.second, slot, elsewhere, samples_lights);
+                    if (samples_lights)
+                        for (uint32_t j = 0; j < shadow_ray_count; ++j)
+                            diffuse.set_light_sample(diffuse.count - 1, j, light_sample_point<E>(scene, random, j));
+                }
                 if (diffuse.full()) shade_diffuse_chunk();
                 continue;
             }
