@@ -28,6 +28,8 @@
 #include "core/geometry/geometry_soa.h"
 #include "core/scene/scene.h"
 #include "displaced_sphere.h"
+#include "kernels/accel/bvh.h"
+#include "kernels/isa/intersect_dispatch.h"
 #include "mesh_writers.h"
 #include "workloads.h"
 
@@ -403,6 +405,32 @@ TEST(BenchScenes, IncoherentRaysNeverStartInsideTheMeshBall) {
     for (std::size_t i = 0; i < unconstrained.size(); ++i)
         inside += glm::length(unconstrained.ray(i).origin - description.solid->centre) < description.solid->radius;
     EXPECT_GT(inside, 0u);
+}
+
+// The bounce workload: rays from the surfaces the incoherent rays hit, the mesh's and the room's,
+// unit directions, the asked-for count, the same bits every time.
+TEST(BenchScenes, BounceRaysStartOnTheMeshAndTheRoom) {
+    SceneDescription with_sphere = hexroom_description(8, 8, 1);
+    with_sphere.meshes.push_back(displaced_sphere(benchmark_sphere(100, 50), 0));
+    const Ball ball{kBenchmarkSphereCentre, kBenchmarkSphereBoundingRadius};
+    const Scene scene = build_scene(with_sphere);
+    const Bvh bvh = build_bvh(scene);
+    const ClosestHitFunction closest = [&](const RayView& rays, const HitView& hits) {
+        intersect_kernels(Isa::scalar).closest_bvh(bvh_view(bvh), rays, hits);
+    };
+    const RaySet rays = bounce_rays(scene, ball, closest, 5'000, 1, 3);
+    ASSERT_EQ(rays.size(), 5'000u);
+    std::size_t on_mesh = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const Ray ray = rays.ray(i);
+        ASSERT_NEAR(glm::length(ray.direction), 1.0f, 1e-5f) << "ray " << i;
+        on_mesh += glm::length(ray.origin - ball.centre) < ball.radius;
+    }
+    EXPECT_GT(on_mesh, 0u);
+    EXPECT_LT(on_mesh, rays.size());
+    const RaySet again = bounce_rays(scene, ball, closest, 5'000, 1, 3);
+    EXPECT_EQ(std::memcmp(again.ox.data(), rays.ox.data(), rays.size() * sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(again.dz.data(), rays.dz.data(), rays.size() * sizeof(float)), 0);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "scene_workloads.h"
 
 #include <cstdio>
+#include <iterator>
 #include <map>
 
 #include "bench_scene.h"
@@ -19,7 +20,7 @@ struct SceneWorkloads::Built {
     Scene scene;
     std::optional<Ball> solid;
     std::unique_ptr<Bvh> bvh4, bvh8;
-    std::unique_ptr<RaySet> rays[3];  // indexed by Workload
+    std::unique_ptr<RaySet> rays[std::size(kAllWorkloads)];  // indexed by Workload
 };
 
 SceneWorkloads::SceneWorkloads(std::string name) : name_(std::move(name)) {}
@@ -72,7 +73,7 @@ const RaySet& SceneWorkloads::rays(Workload workload) {
     const Scene& built_scene = scene();
     std::unique_ptr<RaySet>& slot = built_->rays[int(workload)];
     if (!slot) {
-        // The shading points of the shadow rays come from the scalar kernels, which give the
+        // The shading points of the shadow and bounce rays come from the scalar kernels, which give the
         // same bits as every other ISA, so the workload does not depend on the machine.
         const ClosestHitFunction closest = [&](const RayView& rays, const HitView& hits) {
             intersect_kernels(Isa::scalar).closest_bvh(bvh_view(bvh(8)), rays, hits);

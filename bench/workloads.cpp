@@ -14,8 +14,10 @@ namespace {
 
 constexpr uint32_t kIncoherentRayCount = 1'000'000;
 constexpr uint32_t kShadowRayCount = 1'000'000;
+constexpr uint32_t kBounceRayCount = 1'000'000;
 constexpr uint64_t kIncoherentSeed = 1;
 constexpr uint64_t kLightSeed = 2;
+constexpr uint64_t kBounceSeed = 3;
 
 // The hexroom's floor polygon (scenes/hexroom.json), clockwise seen from above, and its
 // floor and ceiling heights. Written out rather than recovered from the triangles: the room is
@@ -93,6 +95,7 @@ const char* workload_name(Workload workload) {
         case Workload::primary: return "primary";
         case Workload::incoherent: return "incoherent";
         case Workload::shadow: return "shadow";
+        case Workload::bounce: return "bounce";
     }
     return "unknown";
 }
@@ -126,29 +129,58 @@ RaySet incoherent_rays(const Scene& scene, const std::optional<Ball>& solid, uin
     return rays;
 }
 
-RaySet shadow_rays(const Scene& scene, const std::optional<Ball>& solid, const ClosestHitFunction& closest, uint32_t count,
-                   uint64_t incoherent_seed, uint64_t light_seed) {
-    const glm::vec3 unit_throughput(1.0f);  // the samples' contribution is not used here
-    RaySet rays;
-    // About 7 in 10 incoherent rays yield a shadow ray; the stream is read in chunks until enough have.
+namespace {
+
+// visit(probe, hit, surface, material, index) at each closest hit of the incoherent stream (seed
+// `seed`) on a surface that gathers direct light (diffuse, not black: not the mirror, glass or
+// the light itself), `index` the probe's place in the stream, until `enough()`.
+template <typename Enough, typename Visit>
+void for_each_diffuse_hit(const Scene& scene, const std::optional<Ball>& solid, const ClosestHitFunction& closest,
+                          uint64_t seed, Enough&& enough, Visit&& visit) {
+    // About 7 in 10 incoherent rays hit such a surface; the stream is read in chunks until enough have.
     constexpr uint32_t kChunk = 1u << 18;
-    for (uint32_t first = 0; rays.size() < count; first += kChunk) {
-        const RaySet probes = incoherent_rays(scene, solid, first, kChunk, incoherent_seed);
+    for (uint32_t first = 0; !enough(); first += kChunk) {
+        const RaySet probes = incoherent_rays(scene, solid, first, kChunk, seed);
         ClosestHits hits(probes.size());
         closest(probes.view(), {hits.t.data(), hits.u.data(), hits.v.data(), hits.prim.data()});
-        for (uint32_t i = 0; i < probes.size() && rays.size() < count; ++i) {
+        for (uint32_t i = 0; i < probes.size() && !enough(); ++i) {
             const Hit hit = hits.at(i);
             if (!hit.found()) continue;
             const Ray probe = probes.ray(i);
             const SurfacePoint surface = surface_at(scene, probe, hit);
             const Material& material = scene.materials[surface.material];
-            if (!gathers_direct_light(material)) continue;
-            const DirectLightSampler<> lights(scene, material, surface, light_sampling_point(surface, probe.direction),
-                                              probe.direction, unit_throughput, PathSeed{path_key(light_seed, first + i, 0), 0},
-                                              0, 1);
-            lights.sample_all([&](const ShadowRay& shadow) { rays.push_back(shadow.ray, shadow.tmax); });
+            if (gathers_direct_light(material)) visit(probe, surface, material, first + i);
         }
     }
+}
+
+}  // namespace
+
+RaySet shadow_rays(const Scene& scene, const std::optional<Ball>& solid, const ClosestHitFunction& closest, uint32_t count,
+                   uint64_t incoherent_seed, uint64_t light_seed) {
+    const glm::vec3 unit_throughput(1.0f);  // the samples' contribution is not used here
+    RaySet rays;
+    for_each_diffuse_hit(
+        scene, solid, closest, incoherent_seed, [&] { return rays.size() >= count; },
+        [&](const Ray& probe, const SurfacePoint& surface, const Material& material, uint32_t index) {
+            const DirectLightSampler<> lights(scene, material, surface, light_sampling_point(surface, probe.direction),
+                                              probe.direction, unit_throughput, PathSeed{path_key(light_seed, index, 0), 0}, 0, 1);
+            lights.sample_all([&](const ShadowRay& shadow) { rays.push_back(shadow.ray, shadow.tmax); });
+        });
+    return rays;
+}
+
+RaySet bounce_rays(const Scene& scene, const std::optional<Ball>& solid, const ClosestHitFunction& closest, uint32_t count,
+                   uint64_t incoherent_seed, uint64_t bounce_seed) {
+    RaySet rays;
+    for_each_diffuse_hit(
+        scene, solid, closest, incoherent_seed, [&] { return rays.size() >= count; },
+        [&](const Ray& probe, const SurfacePoint& surface, const Material& material, uint32_t index) {
+            // The first bounce, before the roulette: every path that reaches here goes on.
+            const auto next = continue_path<DefaultEstimator>(scene, material, surface, probe.direction, glm::vec3(1.0f),
+                                                              PathSeed{path_key(bounce_seed, index, 0), 0}, 0, false);
+            if (next) rays.push_back(next->ray);
+        });
     return rays;
 }
 
@@ -156,9 +188,10 @@ RaySet workload_rays(Workload workload, const Scene& scene, const std::optional<
     switch (workload) {
         case Workload::primary: return primary_rays(scene);
         case Workload::incoherent: return incoherent_rays(scene, solid, 0, kIncoherentRayCount, kIncoherentSeed);
-        case Workload::shadow: break;
+        case Workload::shadow: return shadow_rays(scene, solid, closest, kShadowRayCount, kIncoherentSeed, kLightSeed);
+        case Workload::bounce: break;
     }
-    return shadow_rays(scene, solid, closest, kShadowRayCount, kIncoherentSeed, kLightSeed);
+    return bounce_rays(scene, solid, closest, kBounceRayCount, kIncoherentSeed, kBounceSeed);
 }
 
 }  // namespace wt::bench

@@ -21,8 +21,8 @@
 
 namespace wt::bench {
 
-enum class Workload { primary, incoherent, shadow };
-constexpr Workload kAllWorkloads[] = {Workload::primary, Workload::incoherent, Workload::shadow};
+enum class Workload { primary, incoherent, shadow, bounce };
+constexpr Workload kAllWorkloads[] = {Workload::primary, Workload::incoherent, Workload::shadow, Workload::bounce};
 const char* workload_name(Workload workload);
 
 // Rays in the SoA layout the kernels read.
@@ -72,10 +72,18 @@ RaySet incoherent_rays(const Scene& scene, const std::optional<Ball>& solid, uin
 RaySet shadow_rays(const Scene& scene, const std::optional<Ball>& solid, const ClosestHitFunction& closest, uint32_t count,
                    uint64_t incoherent_seed, uint64_t light_seed);
 
+// `count` closest rays as the renderer's diffuse bounces: at the same shading points as
+// shadow_rays, continue_path's direction (cosine-weighted about the facing normal) from the
+// point offset off its surface, unbounded. They start on the surfaces, a mesh's among them, where
+// the incoherent rays start in the open: a ray leaving a dense mesh first walks the leaves about
+// its origin.
+RaySet bounce_rays(const Scene& scene, const std::optional<Ball>& solid, const ClosestHitFunction& closest, uint32_t count,
+                   uint64_t incoherent_seed, uint64_t bounce_seed);
+
 // --- The sets the benchmarks share ---
 
 // primary: one ray per pixel of the scene's camera (800x800 = 640,000 in bench_intersect);
-// incoherent and shadow: 1,000,000 rays each, with fixed seeds.
+// incoherent, shadow and bounce: 1,000,000 rays each, with fixed seeds.
 RaySet workload_rays(Workload workload, const Scene& scene, const std::optional<Ball>& solid, const ClosestHitFunction& closest);
 
 }  // namespace wt::bench
