@@ -131,7 +131,7 @@ RaySet incoherent_rays(const Scene& scene, const std::optional<Ball>& solid, uin
 
 namespace {
 
-// visit(probe, hit, surface, material, index) at each closest hit of the incoherent stream (seed
+// visit(probe, surface, material, index) at each closest hit of the incoherent stream (seed
 // `seed`) on a surface that gathers direct light (diffuse, not black: not the mirror, glass or
 // the light itself), `index` the probe's place in the stream, until `enough()`.
 template <typename Enough, typename Visit>
